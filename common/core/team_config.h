@@ -1,0 +1,142 @@
+#pragma once
+// The team description every service reads: species (mobility and sensing limits),
+// robots, endpoints and the paper's algorithm parameters. Loaded from one YAML file
+// (see deploy/teams/*.yaml); defaults are the paper's parameter table.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace hexplore::core {
+
+// One rotating multi-line LiDAR (or a gimballed one). Angles in degrees in the sensor frame
+// (x forward, z up); elevation 0 is horizontal.
+struct LidarConfig {
+  std::string name;
+  int lines = 16;                       // vertical channels, evenly spaced over the vertical FoV
+  double vertical_min_deg = -15.0;
+  double vertical_max_deg = 15.0;
+  double horizontal_min_deg = -180.0;   // azimuth range; 360 deg span = full rotation
+  double horizontal_max_deg = 180.0;
+  double horizontal_step_deg = 0.2;     // azimuth resolution
+  double min_range_m = 0.3;
+  double max_range_m = 40.0;
+  double range_noise_stddev_m = 0.01;
+  Eigen::Vector3d mount_offset_m = Eigen::Vector3d::Zero();  // sensor origin in the body frame
+  double mount_pitch_deg = 0.0;         // fixed mount pitch (positive = nose up)
+  bool gimbal = false;                  // yaw/pitch gimbal that aims the sensor at a target
+
+  int rays_per_frame() const;
+};
+
+// A robot species: mobility limits, speeds, observation capability and sensors.
+struct SpeciesConfig {
+  std::string name;
+  int traversal_level = 1;              // a_zeta(k): 1 = least capable; higher climbs more
+  // Terrain limits a voxel must satisfy to be low-risk for this species (R_k(v) = 0).
+  double max_slope_deg = 15.0;
+  double max_step_m = 0.05;             // largest height jump between adjacent ground cells
+  double max_roughness_m = 0.03;        // largest std-dev of heights across the footprint
+  double min_clearance_m = 0.6;         // free space needed above the ground (body height)
+  double max_sparsity = 0.9;            // fraction of empty neighbour cells tolerated
+  // Motion and observation.
+  double speed_mps = 0.5;               // vartheta_zeta(k)
+  double observation_speed_views_per_s = 1.0;  // vartheta_varsigma(k)
+  double observation_range_m = 10.0;    // varsigma_k and l_th for this species
+  Eigen::Vector3d body_half_extents_m = Eigen::Vector3d(0.4, 0.3, 0.3);
+  std::vector<LidarConfig> lidars;
+};
+
+// One robot of the team.
+struct RobotConfig {
+  std::string id;
+  std::string species;
+  Eigen::Vector3d start_position_m = Eigen::Vector3d::Zero();
+  double start_yaw_deg = 0.0;
+};
+
+// Where the services listen. Every service binds one PUB socket and one ROUTER socket;
+// ports are base_port + robot_index * ports_per_robot + service offset (see endpoints.h).
+struct TransportConfig {
+  std::string scheme = "tcp";            // tcp | ipc | inproc
+  std::string host_template = "127.0.0.1";  // "{robot}" and "{service}" are substituted
+  int base_port = 17000;
+  int ports_per_robot = 20;
+  std::string ipc_dir = "/tmp/hexplore";
+  int send_high_water_mark = 10000;
+  int receive_high_water_mark = 10000;
+  int64_t max_message_bytes = 64 * 1024 * 1024;
+  int linger_ms = 1000;                  // how long a closing socket may flush queued messages
+};
+
+// The paper's parameter table (defaults) plus implementation choices.
+struct AlgorithmParams {
+  // Perception map.
+  double map_resolution_m = 0.15;
+  double rho_th = 0.3;                   // observation-density threshold (points per 0.01 m^2 ... see perception)
+  double gamma_th_deg = 45.0;            // observation-angle threshold
+  double s_th_deg = 45.0;                // ground / facade slope threshold
+  // Task views.
+  double theta_l_deg = -45.0;
+  double theta_u_deg = 45.0;
+  double beta_i = 0.5;
+  double beta_l = 0.5;
+  double beta_zeta = 10.0;
+  double beta_varsigma = 1.0;
+  // Assignment fitness.
+  double beta_e = 0.5;
+  double beta_c = 1.0;
+  double beta_m = 1.5;
+  double beta_d = 3.0;
+  // Supervoxels, sharing, clustering, safety, replanning.
+  double eta_e_m = 0.2;
+  double eta_s_m = 1.0;
+  double eta_c_s = 1.0;
+  double eta_r_m = 5.0;
+  double eta_p_m = 2.0;
+  double eta_t_s = 10.0;
+  // Genetic algorithm budget.
+  int ga_population = 64;
+  int ga_max_generations = 400;
+  double ga_time_budget_s = 0.05;
+  // Planner and reproducibility.
+  std::string planner = "hexplore";
+  uint64_t seed = 1;
+};
+
+// The whole team file.
+struct TeamConfig {
+  std::string source_file;               // where it was loaded from, for error messages
+  std::string scene = "single-building";
+  std::vector<SpeciesConfig> species;
+  std::vector<RobotConfig> robots;
+  TransportConfig transport;
+  AlgorithmParams params;
+  int metrics_base_port = 0;             // 0 = no Prometheus exposer; else base + robot*10 + service
+  double time_limit_s = 1800.0;          // mission ends at this sim time if views remain
+
+  // Lookups; nullptr / nullopt when unknown, never throw.
+  const SpeciesConfig* find_species(const std::string& name) const;
+  const RobotConfig* find_robot(const std::string& id) const;
+  std::optional<int> robot_index(const std::string& id) const;
+  std::optional<int> species_index(const std::string& name) const;
+
+  // Observation-capability level a_varsigma(k): species ranked by observation range, ties share.
+  int observation_level(const SpeciesConfig& s) const;
+};
+
+// Parses and validates a team file; throws ConfigError naming file, key and problem.
+TeamConfig load_team_config(const std::string& path);
+// Same, from YAML text (tests, embedded defaults); `origin` names it in errors.
+TeamConfig parse_team_config(const std::string& yaml_text, const std::string& origin);
+// Checks cross-references and ranges; throws ConfigError.
+void validate(const TeamConfig& config);
+
+// The paper's two species, as built-in templates a team file can refer to by name.
+SpeciesConfig builtin_slugcat();
+SpeciesConfig builtin_mr1000();
+
+}  // namespace hexplore::core

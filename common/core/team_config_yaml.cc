@@ -1,0 +1,233 @@
+// YAML reader for TeamConfig. Every key is checked: unknown keys, wrong types and bad values
+// raise ConfigError with the file, the dotted key path and the line, so typos never pass silently.
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+#include "common/core/config_error.h"
+#include "common/core/team_config.h"
+
+namespace hexplore::core {
+namespace {
+
+class Reader {
+ public:
+  explicit Reader(std::string origin) : origin_(std::move(origin)) {}
+
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& problem) const {
+    const int line = node.IsDefined() && node.Mark().line >= 0 ? node.Mark().line + 1 : 0;
+    throw ConfigError(origin_, key, problem, line);
+  }
+
+  // Rejects keys of `map` that are not in `known`.
+  void only_keys(const YAML::Node& map, const std::string& path, const std::set<std::string>& known) const {
+    if (!map.IsMap()) fail(map, path, "must be a mapping");
+    for (const auto& kv : map) {
+      const auto name = kv.first.as<std::string>();
+      if (!known.contains(name)) {
+        std::string list;
+        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+        fail(kv.first, join(path, name), "unknown key (known keys: " + list + ")");
+      }
+    }
+  }
+
+  template <typename T>
+  void read(const YAML::Node& map, const std::string& path, const std::string& name, T& out) const {
+    const YAML::Node node = map[name];
+    if (!node.IsDefined() || node.IsNull()) return;  // keep the default
+    if (!node.IsScalar()) fail(node, join(path, name), "must be a scalar");
+    try {
+      out = node.as<T>();
+    } catch (const YAML::Exception&) {
+      fail(node, join(path, name), "cannot read '" + node.Scalar() + "' as " + type_name<T>());
+    }
+    if constexpr (std::is_floating_point_v<T>) {
+      if (!std::isfinite(out)) fail(node, join(path, name), "must be a finite number");
+    }
+  }
+
+  void read_vec3(const YAML::Node& map, const std::string& path, const std::string& name, Eigen::Vector3d& out) const {
+    const YAML::Node node = map[name];
+    if (!node.IsDefined() || node.IsNull()) return;
+    if (!node.IsSequence() || node.size() != 3) fail(node, join(path, name), "must be a list of three numbers");
+    for (int i = 0; i < 3; ++i) {
+      try {
+        out[i] = node[i].as<double>();
+      } catch (const YAML::Exception&) {
+        fail(node[i], join(path, name), "element " + std::to_string(i) + " is not a number");
+      }
+      if (!std::isfinite(out[i])) fail(node[i], join(path, name), "must be finite numbers");
+    }
+  }
+
+  static std::string join(const std::string& path, const std::string& name) {
+    return path.empty() ? name : path + "." + name;
+  }
+
+  const std::string& origin() const { return origin_; }
+
+ private:
+  template <typename T>
+  static const char* type_name() {
+    if constexpr (std::is_same_v<T, bool>) return "a boolean";
+    else if constexpr (std::is_integral_v<T>) return "an integer";
+    else if constexpr (std::is_floating_point_v<T>) return "a number";
+    else return "a string";
+  }
+
+  std::string origin_;
+};
+
+LidarConfig read_lidar(const Reader& r, const YAML::Node& n, const std::string& path) {
+  r.only_keys(n, path, {"name", "lines", "vertical_min_deg", "vertical_max_deg", "horizontal_min_deg",
+                        "horizontal_max_deg", "horizontal_step_deg", "min_range_m", "max_range_m",
+                        "range_noise_stddev_m", "mount_offset_m", "mount_pitch_deg", "gimbal"});
+  LidarConfig l;
+  r.read(n, path, "name", l.name);
+  r.read(n, path, "lines", l.lines);
+  r.read(n, path, "vertical_min_deg", l.vertical_min_deg);
+  r.read(n, path, "vertical_max_deg", l.vertical_max_deg);
+  r.read(n, path, "horizontal_min_deg", l.horizontal_min_deg);
+  r.read(n, path, "horizontal_max_deg", l.horizontal_max_deg);
+  r.read(n, path, "horizontal_step_deg", l.horizontal_step_deg);
+  r.read(n, path, "min_range_m", l.min_range_m);
+  r.read(n, path, "max_range_m", l.max_range_m);
+  r.read(n, path, "range_noise_stddev_m", l.range_noise_stddev_m);
+  r.read_vec3(n, path, "mount_offset_m", l.mount_offset_m);
+  r.read(n, path, "mount_pitch_deg", l.mount_pitch_deg);
+  r.read(n, path, "gimbal", l.gimbal);
+  return l;
+}
+
+SpeciesConfig read_species(const Reader& r, const YAML::Node& n, const std::string& path) {
+  r.only_keys(n, path, {"name", "builtin", "traversal_level", "max_slope_deg", "max_step_m", "max_roughness_m",
+                        "min_clearance_m", "max_sparsity", "speed_mps", "observation_speed_views_per_s",
+                        "observation_range_m", "body_half_extents_m", "lidars"});
+  SpeciesConfig s;
+  std::string builtin;
+  r.read(n, path, "builtin", builtin);
+  if (builtin == "SLUGCAT") s = builtin_slugcat();
+  else if (builtin == "MR1000") s = builtin_mr1000();
+  else if (!builtin.empty()) r.fail(n["builtin"], path + ".builtin", "unknown built-in species '" + builtin + "' (known: SLUGCAT, MR1000)");
+  r.read(n, path, "name", s.name);
+  r.read(n, path, "traversal_level", s.traversal_level);
+  r.read(n, path, "max_slope_deg", s.max_slope_deg);
+  r.read(n, path, "max_step_m", s.max_step_m);
+  r.read(n, path, "max_roughness_m", s.max_roughness_m);
+  r.read(n, path, "min_clearance_m", s.min_clearance_m);
+  r.read(n, path, "max_sparsity", s.max_sparsity);
+  r.read(n, path, "speed_mps", s.speed_mps);
+  r.read(n, path, "observation_speed_views_per_s", s.observation_speed_views_per_s);
+  r.read(n, path, "observation_range_m", s.observation_range_m);
+  r.read_vec3(n, path, "body_half_extents_m", s.body_half_extents_m);
+  if (const auto lidars = n["lidars"]; lidars.IsDefined()) {
+    if (!lidars.IsSequence()) r.fail(lidars, path + ".lidars", "must be a list");
+    s.lidars.clear();
+    for (size_t i = 0; i < lidars.size(); ++i)
+      s.lidars.push_back(read_lidar(r, lidars[i], path + ".lidars[" + std::to_string(i) + "]"));
+  }
+  return s;
+}
+
+RobotConfig read_robot(const Reader& r, const YAML::Node& n, const std::string& path) {
+  r.only_keys(n, path, {"id", "species", "start", "yaw_deg"});
+  RobotConfig robot;
+  r.read(n, path, "id", robot.id);
+  r.read(n, path, "species", robot.species);
+  r.read_vec3(n, path, "start", robot.start_position_m);
+  r.read(n, path, "yaw_deg", robot.start_yaw_deg);
+  return robot;
+}
+
+void read_transport(const Reader& r, const YAML::Node& n, TransportConfig& t) {
+  const std::string path = "transport";
+  r.only_keys(n, path, {"scheme", "host_template", "base_port", "ports_per_robot", "ipc_dir", "send_high_water_mark",
+                        "receive_high_water_mark", "max_message_bytes", "linger_ms"});
+  r.read(n, path, "scheme", t.scheme);
+  r.read(n, path, "host_template", t.host_template);
+  r.read(n, path, "base_port", t.base_port);
+  r.read(n, path, "ports_per_robot", t.ports_per_robot);
+  r.read(n, path, "ipc_dir", t.ipc_dir);
+  r.read(n, path, "send_high_water_mark", t.send_high_water_mark);
+  r.read(n, path, "receive_high_water_mark", t.receive_high_water_mark);
+  r.read(n, path, "max_message_bytes", t.max_message_bytes);
+  r.read(n, path, "linger_ms", t.linger_ms);
+}
+
+void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
+  const std::string path = "params";
+  r.only_keys(n, path, {"map_resolution_m", "rho_th", "gamma_th_deg", "s_th_deg", "theta_l_deg", "theta_u_deg",
+                        "beta_i", "beta_l", "beta_zeta", "beta_varsigma", "beta_e", "beta_c", "beta_m", "beta_d",
+                        "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "ga_population",
+                        "ga_max_generations", "ga_time_budget_s", "planner", "seed"});
+  r.read(n, path, "map_resolution_m", p.map_resolution_m);
+  r.read(n, path, "rho_th", p.rho_th);
+  r.read(n, path, "gamma_th_deg", p.gamma_th_deg);
+  r.read(n, path, "s_th_deg", p.s_th_deg);
+  r.read(n, path, "theta_l_deg", p.theta_l_deg);
+  r.read(n, path, "theta_u_deg", p.theta_u_deg);
+  r.read(n, path, "beta_i", p.beta_i);
+  r.read(n, path, "beta_l", p.beta_l);
+  r.read(n, path, "beta_zeta", p.beta_zeta);
+  r.read(n, path, "beta_varsigma", p.beta_varsigma);
+  r.read(n, path, "beta_e", p.beta_e);
+  r.read(n, path, "beta_c", p.beta_c);
+  r.read(n, path, "beta_m", p.beta_m);
+  r.read(n, path, "beta_d", p.beta_d);
+  r.read(n, path, "eta_e_m", p.eta_e_m);
+  r.read(n, path, "eta_s_m", p.eta_s_m);
+  r.read(n, path, "eta_c_s", p.eta_c_s);
+  r.read(n, path, "eta_r_m", p.eta_r_m);
+  r.read(n, path, "eta_p_m", p.eta_p_m);
+  r.read(n, path, "eta_t_s", p.eta_t_s);
+  r.read(n, path, "ga_population", p.ga_population);
+  r.read(n, path, "ga_max_generations", p.ga_max_generations);
+  r.read(n, path, "ga_time_budget_s", p.ga_time_budget_s);
+  r.read(n, path, "planner", p.planner);
+  r.read(n, path, "seed", p.seed);
+}
+
+}  // namespace
+
+TeamConfig parse_team_config(const std::string& yaml_text, const std::string& origin) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException& e) {
+    throw ConfigError(origin, "", "YAML syntax error: " + e.msg, e.mark.line + 1);
+  }
+  Reader r(origin);
+  if (!root.IsMap()) throw ConfigError(origin, "", "the team file must be a YAML mapping");
+  r.only_keys(root, "", {"scene", "time_limit_s", "metrics_base_port", "species", "robots", "transport", "params"});
+  TeamConfig c;
+  c.source_file = origin;
+  r.read(root, "", "scene", c.scene);
+  r.read(root, "", "time_limit_s", c.time_limit_s);
+  r.read(root, "", "metrics_base_port", c.metrics_base_port);
+  const auto species = root["species"];
+  if (!species.IsDefined() || !species.IsSequence()) r.fail(species.IsDefined() ? species : root, "species", "must be a list of species");
+  for (size_t i = 0; i < species.size(); ++i)
+    c.species.push_back(read_species(r, species[i], "species[" + std::to_string(i) + "]"));
+  const auto robots = root["robots"];
+  if (!robots.IsDefined() || !robots.IsSequence()) r.fail(robots.IsDefined() ? robots : root, "robots", "must be a list of robots");
+  for (size_t i = 0; i < robots.size(); ++i)
+    c.robots.push_back(read_robot(r, robots[i], "robots[" + std::to_string(i) + "]"));
+  if (const auto t = root["transport"]; t.IsDefined()) read_transport(r, t, c.transport);
+  if (const auto p = root["params"]; p.IsDefined()) read_params(r, p, c.params);
+  validate(c);
+  return c;
+}
+
+TeamConfig load_team_config(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path, "", "cannot open the file (missing or unreadable)");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (buffer.str().find_first_not_of(" \t\r\n") == std::string::npos) throw ConfigError(path, "", "the file is empty");
+  return parse_team_config(buffer.str(), path);
+}
+
+}  // namespace hexplore::core

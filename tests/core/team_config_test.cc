@@ -1,0 +1,98 @@
+#include <gtest/gtest.h>
+
+#include "common/core/config_error.h"
+#include "common/core/team_config.h"
+
+namespace hexplore::core {
+namespace {
+
+constexpr const char* kMinimal = R"(
+species:
+  - builtin: SLUGCAT
+  - builtin: MR1000
+robots:
+  - {id: a, species: SLUGCAT}
+  - {id: b, species: MR1000, start: [1, 2, 0]}
+)";
+
+TEST(TeamConfig, LoadsDefaultTeamFile) {
+  const auto c = load_team_config(std::string(HEXPLORE_SOURCE_DIR) + "/deploy/teams/default.yaml");
+  ASSERT_EQ(c.robots.size(), 2u);
+  EXPECT_EQ(c.scene, "single-building");
+  EXPECT_NE(c.find_species("SLUGCAT"), nullptr);
+  EXPECT_DOUBLE_EQ(c.params.eta_s_m, 1.0);  // paper default
+}
+
+TEST(TeamConfig, BuiltinLidarsMatchThePaper) {
+  const auto slugcat = builtin_slugcat();
+  ASSERT_EQ(slugcat.lidars.size(), 1u);
+  EXPECT_EQ(slugcat.lidars[0].lines, 120);
+  EXPECT_EQ(slugcat.lidars[0].rays_per_frame(), 216000);
+  const auto mr = builtin_mr1000();
+  ASSERT_EQ(mr.lidars.size(), 2u);
+  EXPECT_TRUE(mr.lidars[0].gimbal);
+  EXPECT_EQ(mr.lidars[1].lines, 80);
+}
+
+TEST(TeamConfig, ObservationLevelsRankByRange) {
+  const auto c = parse_team_config(kMinimal, "test");
+  EXPECT_EQ(c.observation_level(*c.find_species("SLUGCAT")), 1);
+  EXPECT_EQ(c.observation_level(*c.find_species("MR1000")), 2);
+}
+
+void expect_error(const std::string& yaml, const std::string& key, const std::string& problem_part, int line = -1) {
+  try {
+    parse_team_config(yaml, "team.yaml");
+    FAIL() << "expected a ConfigError for " << key;
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.file(), "team.yaml");
+    EXPECT_EQ(e.key(), key) << e.what();
+    EXPECT_NE(e.problem().find(problem_part), std::string::npos) << e.what();
+    if (line >= 0) {
+      EXPECT_EQ(e.line(), line) << e.what();
+    }
+    EXPECT_NE(std::string(e.what()).find("team.yaml"), std::string::npos);
+  }
+}
+
+TEST(TeamConfig, UnknownSpeciesIsNamed) {
+  expect_error("species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: WALKER}]\n", "robots[0].species",
+               "unknown species 'WALKER'");
+}
+
+TEST(TeamConfig, TypoKeyIsRejectedWithLine) {
+  expect_error("species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}]\nparams:\n  eta_x_m: 3\n",
+               "params.eta_x_m", "unknown key", 4);
+}
+
+TEST(TeamConfig, WrongTypeIsRejected) {
+  expect_error("species: [{builtin: SLUGCAT, speed_mps: fast}]\nrobots: [{id: a, species: SLUGCAT}]\n",
+               "species[0].speed_mps", "cannot read 'fast' as a number");
+}
+
+TEST(TeamConfig, NanIsRejected) {
+  expect_error("species: [{builtin: SLUGCAT, speed_mps: .nan}]\nrobots: [{id: a, species: SLUGCAT}]\n",
+               "species[0].speed_mps", "finite");
+}
+
+TEST(TeamConfig, DuplicateRobotIsRejected) {
+  expect_error("species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}, {id: a, species: SLUGCAT}]\n",
+               "robots[1].id", "duplicate robot id");
+}
+
+TEST(TeamConfig, SyntaxErrorHasLine) {
+  expect_error("species: [\nrobots: {", "", "YAML syntax error");
+}
+
+TEST(TeamConfig, MissingFileIsNamed) {
+  try {
+    load_team_config("/nonexistent/team.yaml");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.file(), "/nonexistent/team.yaml");
+    EXPECT_NE(e.problem().find("cannot open"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace hexplore::core
