@@ -1,0 +1,60 @@
+#pragma once
+// What the station's experiment recorder accumulates during one mission: the paper's metrics
+// (Simulations section) in plain data, independent of how they were collected.
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace hexplore::station {
+
+// Reconstruction completeness at one sim time, as fractions in [0, 1].
+struct CompletenessSample {
+  double sim_time_s = 0.0;
+  double team = 0.0;             // union of every robot's occupied voxels
+  double team_observable = 0.0;  // restricted to ground truth the team could observe
+  std::map<std::string, double> per_robot;
+};
+
+// One robot's trajectory and per-robot totals.
+struct RobotTrack {
+  std::string species;
+  std::vector<double> times_s;
+  std::vector<Eigen::Vector3d> positions_m;
+  double length_m = 0.0;
+  uint32_t collisions = 0;
+  std::string last_state;
+};
+
+// The communication categories the paper reports; bytes on the matching team topic.
+inline const std::vector<std::string>& communication_categories() {
+  static const std::vector<std::string> kCategories = {"pose", "incremental_map", "executable_path",
+                                                       "exploration_route"};
+  return kCategories;
+}
+
+struct ExperimentRecord {
+  std::string scene;
+  std::string planner;
+  std::string mode;  // "processes" or "composed"
+  uint64_t seed = 0;
+  std::vector<CompletenessSample> completeness;
+  std::map<std::string, RobotTrack> robots;
+  std::map<std::string, std::vector<double>> planning_times_s;  // per robot, one per round
+  // robot -> category -> bytes sent on the team topic of that category.
+  std::map<std::string, std::map<std::string, uint64_t>> team_bytes;
+  double exploration_time_s = 0.0;
+  std::string end_reason;  // "no task views remain", "time limit", "stopped", ...
+  double wall_time_s = 0.0;
+  // Top-down picture input: occupied voxel centres of the union map at the end.
+  std::vector<Eigen::Vector3f> final_map_points_m;
+
+  // Sum over robots of their final completeness (paper: lower = less overlap... at equal team completeness).
+  double accumulated_completeness() const;
+  double final_team_completeness() const;
+};
+
+}  // namespace hexplore::station

@@ -1,0 +1,194 @@
+#include "common/station/results_writer.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+#include "common/station/charts.h"
+
+namespace hexplore::station {
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\', out += c;
+    else if (c == '\n') out += "\\n";
+    else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
+    else out += c;
+  }
+  return out + "\"";
+}
+
+std::string number(double v) {
+  if (!std::isfinite(v)) return "null";
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+double mean(const std::vector<double>& v) {
+  return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+
+double stddev(const std::vector<double>& v) {
+  if (v.size() < 2) return 0.0;
+  const double m = mean(v);
+  double sq = 0.0;
+  for (double x : v) sq += (x - m) * (x - m);
+  return std::sqrt(sq / static_cast<double>(v.size() - 1));
+}
+
+std::vector<double> all_planning_times(const ExperimentRecord& r) {
+  std::vector<double> all;
+  for (const auto& [_, times] : r.planning_times_s) all.insert(all.end(), times.begin(), times.end());
+  return all;
+}
+
+uint64_t team_bytes_total(const ExperimentRecord& r) {
+  uint64_t total = 0;
+  for (const auto& [_, categories] : r.team_bytes)
+    for (const auto& [__, bytes] : categories) total += bytes;
+  return total;
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text, std::vector<std::string>& written) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path.string() + ": cannot open for writing");
+  out << text;
+  if (!out) throw std::runtime_error(path.string() + ": write failed");
+  written.push_back(path.string());
+}
+
+}  // namespace
+
+std::string summary_json(const ExperimentRecord& r) {
+  const double duration = std::max(r.exploration_time_s, 1e-9);
+  std::ostringstream j;
+  j << "{\n";
+  j << "  \"scene\": " << quoted(r.scene) << ",\n";
+  j << "  \"planner\": " << quoted(r.planner) << ",\n";
+  j << "  \"mode\": " << quoted(r.mode) << ",\n";
+  j << "  \"seed\": " << r.seed << ",\n";
+  j << "  \"end_reason\": " << quoted(r.end_reason) << ",\n";
+  j << "  \"exploration_time_s\": " << number(r.exploration_time_s) << ",\n";
+  j << "  \"wall_time_s\": " << number(r.wall_time_s) << ",\n";
+  j << "  \"final_completeness\": " << number(r.final_team_completeness()) << ",\n";
+  j << "  \"final_observable_completeness\": "
+    << number(r.completeness.empty() ? 0.0 : r.completeness.back().team_observable) << ",\n";
+  j << "  \"accumulated_completeness\": " << number(r.accumulated_completeness()) << ",\n";
+  const auto planning = all_planning_times(r);
+  j << "  \"planning_time_s\": {\"mean\": " << number(mean(planning)) << ", \"max\": "
+    << number(planning.empty() ? 0.0 : *std::max_element(planning.begin(), planning.end()))
+    << ", \"rounds\": " << planning.size() << "},\n";
+  j << "  \"team_kb_per_s\": " << number(static_cast<double>(team_bytes_total(r)) / 1024.0 / duration) << ",\n";
+  j << "  \"robots\": {";
+  bool first = true;
+  for (const auto& [id, track] : r.robots) {
+    j << (first ? "\n" : ",\n") << "    " << quoted(id) << ": {\"species\": " << quoted(track.species)
+      << ", \"trajectory_length_m\": " << number(track.length_m) << ", \"collisions\": " << track.collisions
+      << ", \"final_completeness\": "
+      << number(r.completeness.empty() || !r.completeness.back().per_robot.contains(id)
+                    ? 0.0
+                    : r.completeness.back().per_robot.at(id))
+      << ", \"communication_kb\": {";
+    bool first_category = true;
+    for (const auto& category : communication_categories()) {
+      uint64_t bytes = 0;
+      if (auto it = r.team_bytes.find(id); it != r.team_bytes.end())
+        if (auto c = it->second.find(category); c != it->second.end()) bytes = c->second;
+      j << (first_category ? "" : ", ") << quoted(category) << ": " << number(static_cast<double>(bytes) / 1024.0);
+      first_category = false;
+    }
+    j << "}}";
+    first = false;
+  }
+  j << "\n  }\n}\n";
+  return j.str();
+}
+
+std::vector<std::string> write_results(const ExperimentRecord& r, const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw std::runtime_error(dir + ": cannot create results folder: " + ec.message());
+  std::vector<std::string> written;
+  const fs::path root(dir);
+  write_text(root / "summary.json", summary_json(r), written);
+
+  std::ostringstream c;
+  c << "sim_time_s,team,team_observable";
+  for (const auto& [id, _] : r.robots) c << "," << id;
+  c << "\n";
+  for (const auto& s : r.completeness) {
+    c << number(s.sim_time_s) << "," << number(s.team) << "," << number(s.team_observable);
+    for (const auto& [id, _] : r.robots) c << "," << number(s.per_robot.contains(id) ? s.per_robot.at(id) : 0.0);
+    c << "\n";
+  }
+  write_text(root / "completeness.csv", c.str(), written);
+
+  std::ostringstream t;
+  t << "robot,sim_time_s,x_m,y_m,z_m\n";
+  for (const auto& [id, track] : r.robots)
+    for (size_t i = 0; i < track.positions_m.size(); ++i)
+      t << id << "," << number(i < track.times_s.size() ? track.times_s[i] : 0.0) << ","
+        << number(track.positions_m[i].x()) << "," << number(track.positions_m[i].y()) << ","
+        << number(track.positions_m[i].z()) << "\n";
+  write_text(root / "trajectories.csv", t.str(), written);
+
+  const double duration = std::max(r.exploration_time_s, 1e-9);
+  std::ostringstream m;
+  m << "robot,category,cumulative_kb,average_kb_per_s\n";
+  for (const auto& [id, categories] : r.team_bytes)
+    for (const auto& category : communication_categories()) {
+      const auto it = categories.find(category);
+      const double kb = it == categories.end() ? 0.0 : static_cast<double>(it->second) / 1024.0;
+      m << id << "," << category << "," << number(kb) << "," << number(kb / duration) << "\n";
+    }
+  write_text(root / "communication.csv", m.str(), written);
+
+  std::ostringstream p;
+  p << "robot,round,planning_time_s\n";
+  for (const auto& [id, times] : r.planning_times_s)
+    for (size_t i = 0; i < times.size(); ++i) p << id << "," << i << "," << number(times[i]) << "\n";
+  write_text(root / "planning.csv", p.str(), written);
+
+  write_png(completeness_chart(r), (root / "completeness.png").string());
+  written.push_back((root / "completeness.png").string());
+  write_png(topdown_map(r), (root / "topdown.png").string());
+  written.push_back((root / "topdown.png").string());
+  return written;
+}
+
+std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs) {
+  std::vector<double> time, completeness, accumulated, length, planning, kbps;
+  for (const auto& r : runs) {
+    time.push_back(r.exploration_time_s);
+    completeness.push_back(r.final_team_completeness());
+    accumulated.push_back(r.accumulated_completeness());
+    double total_length = 0.0;
+    for (const auto& [_, track] : r.robots) total_length += track.length_m;
+    length.push_back(total_length);
+    planning.push_back(mean(all_planning_times(r)));
+    kbps.push_back(static_cast<double>(team_bytes_total(r)) / 1024.0 / std::max(r.exploration_time_s, 1e-9));
+  }
+  auto stat = [](const char* name, const std::vector<double>& v, bool last) {
+    return std::string("  ") + quoted(name) + ": {\"mean\": " + number(mean(v)) + ", \"stddev\": " +
+           number(stddev(v)) + "}" + (last ? "\n" : ",\n");
+  };
+  std::ostringstream j;
+  j << "{\n  \"runs\": " << runs.size() << ",\n  \"seeds\": [";
+  for (size_t i = 0; i < runs.size(); ++i) j << (i ? ", " : "") << runs[i].seed;
+  j << "],\n";
+  j << stat("exploration_time_s", time, false) << stat("final_completeness", completeness, false)
+    << stat("accumulated_completeness", accumulated, false) << stat("total_trajectory_length_m", length, false)
+    << stat("mean_planning_time_s", planning, false) << stat("team_kb_per_s", kbps, true);
+  j << "}\n";
+  return j.str();
+}
+
+}  // namespace hexplore::station

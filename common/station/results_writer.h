@@ -1,0 +1,25 @@
+#pragma once
+// Writes one mission's results folder: machine-readable JSON/CSV and two pictures
+// (completeness vs time, top-down map with each robot's trajectory in its own colour).
+
+#include <string>
+#include <vector>
+
+#include "common/station/experiment_record.h"
+
+namespace hexplore::station {
+
+// Creates `dir` if needed and writes summary.json, completeness.csv, trajectories.csv,
+// communication.csv, planning.csv, completeness.png, topdown.png. Returns the files written.
+// Throws std::runtime_error naming the file that could not be written.
+std::vector<std::string> write_results(const ExperimentRecord& record, const std::string& dir);
+
+// The summary object alone (also embedded in summary.json), as JSON text.
+std::string summary_json(const ExperimentRecord& record);
+
+// Mean and standard deviation over several missions (e.g. several seeds) of the headline
+// metrics, as JSON text: exploration time, final completeness, accumulated completeness,
+// trajectory length, planning time, team KB/s.
+std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs);
+
+}  // namespace hexplore::station
