@@ -1,0 +1,72 @@
+#pragma once
+// The fused high-level map a robot plans on: supervoxels by key (iterated in key order, the
+// same on every robot) plus the traversal-topology graph over the ground ones. It is fed by
+// MapUpdate batches: fused changes from MapFusion inside hlmap, or FusedMapUpdate messages
+// received by planning (see proto_convert.h).
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <unordered_map>
+#include <vector>
+
+#include "common/highlevel/supervoxel.h"
+#include "common/highlevel/topology_graph.h"
+
+namespace hexplore::highlevel {
+
+// A batch of changes to a map: new or changed supervoxels, removed keys, added and removed
+// edges. A full snapshot replaces the whole map.
+struct MapUpdate {
+  bool full_snapshot = false;
+  uint64_t version = 0;  // FusedMapUpdate.version when it came from the wire
+  std::vector<Supervoxel> upserts;
+  std::vector<uint64_t> removals;
+  std::vector<EdgeKey> edge_upserts;
+  std::vector<EdgeKey> edge_removals;
+
+  bool empty() const {
+    return !full_snapshot && upserts.empty() && removals.empty() && edge_upserts.empty() &&
+           edge_removals.empty();
+  }
+};
+
+class HighLevelMap {
+ public:
+  // levels[k] = traversal capability level of species index k (species_levels(team)).
+  explicit HighLevelMap(std::vector<int> species_levels = {1});
+
+  // Applies a batch. Edge lengths are always the distance between the current supervoxel
+  // centres; edges whose endpoints are not both traversable ground stay in the edge set but
+  // are not in the graph until they are.
+  void apply(const MapUpdate& update);
+  void clear();
+
+  const Supervoxel* find(uint64_t key) const;
+  // Supervoxels in ascending key order.
+  const std::map<uint64_t, Supervoxel>& supervoxels() const { return supervoxels_; }
+  // Edges (a < b) in ascending order.
+  const std::set<EdgeKey>& edges() const { return edges_; }
+  const TopologyGraph& graph() const { return graph_; }
+  size_t size() const { return supervoxels_.size(); }
+  // The whole map as one full-snapshot update.
+  MapUpdate snapshot() const;
+  // Number of applied batches that changed something.
+  uint64_t version() const { return version_; }
+
+ private:
+  void sync_vertex(uint64_t key);
+  void sync_edge(const EdgeKey& e);
+
+  std::vector<int> levels_;
+  std::map<uint64_t, Supervoxel> supervoxels_;
+  std::set<EdgeKey> edges_;
+  std::unordered_map<uint64_t, std::vector<uint64_t>> incident_;  // key -> edge partners
+  TopologyGraph graph_;
+  uint64_t version_ = 0;
+};
+
+// True when two maps hold the same supervoxels (keys and attributes) and edges.
+bool same_map(const HighLevelMap& a, const HighLevelMap& b);
+
+}  // namespace hexplore::highlevel

@@ -1,0 +1,107 @@
+#pragma once
+// The traversal-topology graph (paper "Traversal-Topology Graph"): vertices are traversable
+// ground supervoxels, edges join spatially adjacent ones and weigh their Euclidean distance;
+// species k may use a vertex when its traversal requirement <= a_zeta(k).
+//
+// Distances are exact shortest paths. Instead of the paper's N^2-per-species Floyd–Warshall
+// matrices, each (source, species) query runs one Dijkstra whose result (distance and
+// predecessor arrays, O(N)) is cached until the graph changes; memory is O(N) per cached
+// source, and answers equal Floyd–Warshall's (tests/highlevel/topology_graph_test.cc).
+// Queries are const and thread-safe; mutation must not run concurrently with queries.
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace hexplore::highlevel {
+
+class TopologyGraph {
+ public:
+  static constexpr double kUnreachable = std::numeric_limits<double>::infinity();
+
+  // levels[k] = traversal capability level a_zeta(k) of species index k.
+  explicit TopologyGraph(std::vector<int> species_levels = {1});
+
+  // Adds or updates a vertex (traversal_requirement >= 1).
+  void upsert_vertex(uint64_t key, const Eigen::Vector3d& position, int traversal_requirement);
+  // Removes a vertex and its edges; no-op when absent.
+  void remove_vertex(uint64_t key);
+  // Adds or updates the undirected edge a-b; ignored (returns false) unless both are vertices.
+  bool upsert_edge(uint64_t a, uint64_t b, double length_m);
+  void remove_edge(uint64_t a, uint64_t b);
+  void clear();
+
+  bool contains(uint64_t key) const { return index_.count(key) != 0; }
+  size_t vertex_count() const { return index_.size(); }
+  size_t edge_count() const { return edge_count_; }
+  int species_count() const { return static_cast<int>(levels_.size()); }
+  std::optional<Eigen::Vector3d> position(uint64_t key) const;
+  std::optional<int> traversal_requirement(uint64_t key) const;
+  // Whether species `species_index` may stand on vertex `key`.
+  bool passable(uint64_t key, int species_index) const;
+  // Neighbour keys and edge lengths of a vertex (all species).
+  std::vector<std::pair<uint64_t, double>> neighbours(uint64_t key) const;
+  // Every vertex key, ascending.
+  std::vector<uint64_t> vertex_keys() const;
+
+  // Shortest-path length from a to b for a species; kUnreachable when either is not a
+  // vertex passable for the species or no path exists; 0 when a == b (and passable).
+  double dist(uint64_t a, uint64_t b, int species_index) const;
+  // Vertex keys from a to b inclusive along a shortest path; empty when unreachable.
+  std::vector<uint64_t> path(uint64_t a, uint64_t b, int species_index) const;
+  // Distances from a to all vertices at once (key -> metres, reachable ones only).
+  std::unordered_map<uint64_t, double> distances_from(uint64_t a, int species_index) const;
+  // Vertex nearest (Euclidean) to p; nullopt when the graph is empty. Ties: smaller key.
+  std::optional<uint64_t> nearest(const Eigen::Vector3d& p) const;
+  // Nearest vertex the species may stand on.
+  std::optional<uint64_t> nearest(const Eigen::Vector3d& p, int species_index) const;
+
+  // Bumped on every structural or weight change; cached searches of older versions are dropped.
+  uint64_t version() const { return version_; }
+  // Bytes held by cached single-source results (for metrics and the benchmark).
+  size_t cache_bytes() const;
+  size_t cached_sources() const;
+
+ private:
+  struct Vertex {
+    uint64_t key = 0;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    int requirement = 0;
+    bool alive = false;
+    std::vector<std::pair<int, double>> adjacent;  // (vertex index, length)
+  };
+  struct Search {  // one Dijkstra tree
+    std::vector<double> distance;
+    std::vector<int> predecessor;
+  };
+
+  int index_of(uint64_t key) const;
+  std::shared_ptr<const Search> search(int source, int species_index) const;
+  void changed();
+  void grid_insert(int index);
+  void grid_erase(int index);
+  std::optional<uint64_t> nearest_impl(const Eigen::Vector3d& p, int species_index) const;
+
+  std::vector<int> levels_;
+  std::vector<Vertex> vertices_;
+  std::vector<int> free_;
+  std::unordered_map<uint64_t, int> index_;
+  size_t edge_count_ = 0;
+  uint64_t version_ = 0;
+  // Uniform grid of vertex indices for nearest-vertex queries.
+  double grid_cell_m_ = 1.0;
+  std::unordered_map<uint64_t, std::vector<int>> grid_;
+
+  mutable std::mutex cache_mutex_;
+  mutable std::unordered_map<uint64_t, std::shared_ptr<const Search>> cache_;  // (source, species)
+  mutable size_t cache_bytes_ = 0;
+  size_t max_cached_sources_ = 4096;
+};
+
+}  // namespace hexplore::highlevel
