@@ -1,0 +1,36 @@
+#include "common/transport/socket_util.h"
+
+#include <limits>
+#include <stdexcept>
+
+namespace hexplore::transport::detail {
+
+void apply_options(zmq::socket_t& socket, const SocketOptions& options) {
+  socket.set(zmq::sockopt::sndhwm, options.send_high_water_mark);
+  socket.set(zmq::sockopt::rcvhwm, options.receive_high_water_mark);
+  socket.set(zmq::sockopt::linger, options.linger_ms);
+  constexpr int64_t kSlack = 64 * 1024;
+  const int64_t limit = options.max_message_bytes > (std::numeric_limits<int64_t>::max() - kSlack) / 2
+                            ? -1
+                            : options.max_message_bytes * 2 + kSlack;
+  socket.set(zmq::sockopt::maxmsgsize, limit);
+}
+
+std::string bind(zmq::socket_t& socket, const std::string& endpoint) {
+  try {
+    socket.bind(endpoint);
+  } catch (const zmq::error_t& e) {
+    throw std::runtime_error("transport: cannot bind " + endpoint + ": " + e.what());
+  }
+  return socket.get(zmq::sockopt::last_endpoint);
+}
+
+void connect(zmq::socket_t& socket, const std::string& endpoint) {
+  try {
+    socket.connect(endpoint);
+  } catch (const zmq::error_t& e) {
+    throw std::runtime_error("transport: cannot connect to " + endpoint + ": " + e.what());
+  }
+}
+
+}  // namespace hexplore::transport::detail

@@ -1,0 +1,21 @@
+#pragma once
+// Internal helpers shared by the socket wrappers: apply SocketOptions, bind with a resolved
+// endpoint. Not part of the public API.
+
+#include <string>
+
+#include <zmq.hpp>
+
+#include "common/transport/socket_options.h"
+
+namespace hexplore::transport::detail {
+
+// Sets SNDHWM, RCVHWM, LINGER and MAXMSGSIZE explicitly.
+void apply_options(zmq::socket_t& socket, const SocketOptions& options);
+// Binds and returns the endpoint actually bound ("tcp://127.0.0.1:*" -> "tcp://127.0.0.1:41234").
+// Throws std::runtime_error naming the endpoint and the ZeroMQ error.
+std::string bind(zmq::socket_t& socket, const std::string& endpoint);
+// Connects; throws std::runtime_error naming the endpoint.
+void connect(zmq::socket_t& socket, const std::string& endpoint);
+
+}  // namespace hexplore::transport::detail
