@@ -1,0 +1,142 @@
+// Command-line entry points: parse flags, load the team file, host the service(s), and turn
+// SIGINT/SIGTERM into a clean stop. Signals are blocked in every thread and taken by the main
+// thread with sigtimedwait, so no handler ever runs inside ZeroMQ or protobuf code.
+#include <signal.h>
+
+#include <cerrno>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/core/config_error.h"
+#include "common/core/log.h"
+#include "common/service/service.h"
+
+namespace hexplore::service {
+namespace {
+
+struct CommandLine {
+  std::string config;
+  std::vector<std::string> robots;
+  std::string log_level = "info";
+  std::optional<int> metrics_port;
+  int status_period_ms = 1000;
+  std::map<std::string, std::string> arguments;
+};
+
+constexpr const char* kUsage =
+    "usage: %s --config TEAM.yaml --robot ID [--log-level debug|info|warn|error] [--metrics-port N|-1] "
+    "[--status-period-ms N] [--<option> <value> ...]";
+
+// Throws std::invalid_argument with a one-line message.
+CommandLine parse(int argc, char** argv, bool many_robots) {
+  CommandLine cl;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag.rfind("--", 0) != 0 || flag.size() < 3)
+      throw std::invalid_argument("unexpected argument '" + flag + "'");
+    if (i + 1 >= argc) throw std::invalid_argument("missing value after " + flag);
+    const std::string value = argv[++i];
+    auto to_int = [&](const std::string& what) {
+      try {
+        size_t used = 0;
+        const int v = std::stoi(value, &used);
+        if (used != value.size()) throw std::invalid_argument(value);
+        return v;
+      } catch (const std::exception&) {
+        throw std::invalid_argument(what + " expects an integer, got '" + value + "'");
+      }
+    };
+    if (flag == "--config") {
+      cl.config = value;
+    } else if (flag == "--robot") {
+      if (!many_robots && !cl.robots.empty()) throw std::invalid_argument("--robot given twice");
+      cl.robots.push_back(value);
+    } else if (flag == "--log-level") {
+      cl.log_level = value;
+    } else if (flag == "--metrics-port") {
+      cl.metrics_port = to_int("--metrics-port");
+      if (*cl.metrics_port < -1 || *cl.metrics_port > 65535)
+        throw std::invalid_argument("--metrics-port must be -1 (any free port), 0 (off) or a port number");
+    } else if (flag == "--status-period-ms") {
+      cl.status_period_ms = to_int("--status-period-ms");
+      if (cl.status_period_ms <= 0) throw std::invalid_argument("--status-period-ms must be > 0");
+    } else {
+      cl.arguments[flag.substr(2)] = value;
+    }
+  }
+  if (cl.config.empty()) throw std::invalid_argument("missing --config TEAM.yaml");
+  if (cl.robots.empty()) throw std::invalid_argument("missing --robot ID");
+  core::LogLevel level;
+  if (!core::parse_log_level(cl.log_level, level))
+    throw std::invalid_argument("--log-level must be debug, info, warn or error, got '" + cl.log_level + "'");
+  core::set_log_level(level);
+  return cl;
+}
+
+int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, bool compose) {
+  // Block the stop signals before any thread exists, so every thread (ZeroMQ's included) inherits the mask.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  const std::string program = argc > 0 ? argv[0] : "service";
+  CommandLine cl;
+  try {
+    cl = parse(argc, argv, compose);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    char usage[512];
+    std::snprintf(usage, sizeof(usage), kUsage, program.c_str());
+    std::cerr << usage << "\n";
+    return 2;
+  }
+  std::unique_ptr<ServiceHost> host;
+  try {
+    HostOptions options;
+    options.metrics_port = cl.metrics_port;
+    options.status_period = std::chrono::milliseconds(cl.status_period_ms);
+    options.compose = compose;
+    options.arguments = cl.arguments;
+    host = std::make_unique<ServiceHost>(core::load_team_config(cl.config), options);
+    for (const auto& robot : cl.robots)
+      for (const auto& factory : factories) host->add(factory(), robot);
+    host->start();
+  } catch (const core::ConfigError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+
+  // Wait for a stop signal, or for every service to end on its own.
+  timespec tick{0, 100'000'000};
+  while (!host->finished()) {
+    const int signal = sigtimedwait(&stop_signals, nullptr, &tick);
+    if (signal == SIGINT || signal == SIGTERM) {
+      core::LogLine(core::LogLevel::kInfo, "service") << "received " << (signal == SIGINT ? "SIGINT" : "SIGTERM")
+                                                       << ", stopping";
+      host->stop();
+      break;
+    }
+  }
+  host->wait();
+  host.reset();  // closes the transport; queued messages get up to linger_ms to leave
+  return 0;
+}
+
+}  // namespace
+
+int run_service_main(int argc, char** argv, const ServiceFactory& factory) {
+  return run(argc, argv, {factory}, false);
+}
+
+int run_composition_main(int argc, char** argv, const std::vector<ServiceFactory>& factories) {
+  return run(argc, argv, factories, true);
+}
+
+}  // namespace hexplore::service
