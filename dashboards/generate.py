@@ -1,0 +1,245 @@
+#!/usr/bin/env python3
+"""Writes the hexplore Grafana dashboards (dashboards/*.json) from the panel lists below.
+
+The JSON files are what Grafana loads (deploy/grafana/provisioning/dashboards/hexplore.yaml);
+this script is where they are edited: change a panel here, run `python3 dashboards/generate.py`,
+commit both. tests/rig checks that the JSON files are what this script writes, that every
+expression names a metric the services export, and (with a live team) that it returns data.
+"""
+import json
+import pathlib
+import sys
+
+DATASOURCE = {"type": "prometheus", "uid": "hexplore-prometheus"}
+SCHEMA_VERSION = 39
+ROBOT = 'robot=~"$robot"'
+
+# Team topics are the only ones that cross robots; the paper's communication categories.
+CATEGORY_OF_TOPIC = {
+    "team/pose": "pose",
+    "team/map": "incremental map",
+    "team/path": "executable path",
+    "team/plan": "exploration route",
+}
+TEAM_TOPICS = 'topic=~"team/(pose|map|path|plan)"'
+# hexplore_transport_dropped_total reasons: lost on the way vs refused by the receiver.
+LOST_REASONS = 'reason=~"fault_injected|timeout|send_failed"'
+REJECT_REASONS = 'reason=~"malformed|wrong_version|wrong_type|oversize"'
+
+
+def by_category(expr):
+    """Adds a `category` label (the paper's names) to series that carry a team topic label."""
+    for topic, category in CATEGORY_OF_TOPIC.items():
+        expr = f'label_replace({expr}, "category", "{category}", "topic", "{topic}")'
+    return expr
+
+
+def target(expr, legend, ref):
+    return {"refId": ref, "datasource": DATASOURCE, "expr": expr, "legendFormat": legend, "range": True}
+
+
+def panel(title, description, exprs, unit="short", kind="timeseries", stack=False, w=12, h=8):
+    """exprs: list of (expr, legend). Placement is filled in by layout()."""
+    refs = "ABCDEFGH"
+    p = {
+        "type": kind,
+        "title": title,
+        "description": description,
+        "datasource": DATASOURCE,
+        "gridPos": {"h": h, "w": w, "x": 0, "y": 0},
+        "targets": [target(e, l, refs[i]) for i, (e, l) in enumerate(exprs)],
+        "fieldConfig": {"defaults": {"unit": unit}, "overrides": []},
+    }
+    if kind == "timeseries":
+        p["fieldConfig"]["defaults"]["custom"] = {
+            "drawStyle": "line",
+            "lineWidth": 1,
+            "fillOpacity": 10 if stack else 0,
+            "showPoints": "never",
+            "stacking": {"mode": "normal" if stack else "none", "group": "A"},
+        }
+        p["options"] = {
+            "legend": {"showLegend": True, "displayMode": "table", "placement": "right", "calcs": ["lastNotNull"]},
+            "tooltip": {"mode": "multi", "sort": "desc"},
+        }
+    elif kind == "stat":
+        p["options"] = {"reduceOptions": {"calcs": ["lastNotNull"], "fields": "", "values": False},
+                        "colorMode": "value", "graphMode": "none", "textMode": "value_and_name"}
+    elif kind == "table":
+        p["options"] = {"showHeader": True}
+        for t in p["targets"]:
+            t.update({"format": "table", "instant": True, "range": False})
+    return p
+
+
+def layout(panels):
+    """Numbers the panels and packs them left to right, top to bottom, on Grafana's 24-column grid."""
+    x = y = row_h = 0
+    for i, p in enumerate(panels, start=1):
+        g = p["gridPos"]
+        if x + g["w"] > 24:
+            x, y, row_h = 0, y + row_h, 0
+        g["x"], g["y"] = x, y
+        x += g["w"]
+        row_h = max(row_h, g["h"])
+        p["id"] = i
+    return panels
+
+
+def dashboard(uid, title, description, panels):
+    return {
+        "uid": uid,
+        "title": title,
+        "description": description,
+        "tags": ["hexplore"],
+        "schemaVersion": SCHEMA_VERSION,
+        "version": 1,
+        "editable": False,
+        "graphTooltip": 1,
+        "timezone": "utc",
+        "time": {"from": "now-30m", "to": "now"},
+        "refresh": "5s",
+        "annotations": {"list": []},
+        "links": [{"type": "dashboards", "tags": ["hexplore"], "asDropdown": False, "title": "hexplore",
+                   "includeVars": True, "keepTime": True}],
+        "templating": {"list": [{
+            "name": "robot",
+            "label": "robot",
+            "type": "query",
+            "datasource": DATASOURCE,
+            "definition": "label_values(hexplore_process_uptime_seconds, robot)",
+            "query": {"query": "label_values(hexplore_process_uptime_seconds, robot)", "refId": "robot"},
+            "includeAll": True,
+            "multi": True,
+            "allValue": ".*",
+            "current": {"selected": True, "text": ["All"], "value": ["$__all"]},
+            "refresh": 2,
+            "sort": 1,
+        }]},
+        "panels": layout(panels),
+    }
+
+
+def rate(metric, selector, window="$__rate_interval"):
+    return f"rate({metric}{{{selector}}}[{window}])"
+
+
+# ---------------------------------------------------------------- communication
+def communication():
+    sent = "hexplore_transport_sent_bytes_total"
+    panels = [
+        panel("Team bytes per second, per robot",
+              "Bytes each robot sends on the team topics (pose, map, path, plan): what crosses the radio.",
+              [(f"sum by (robot) ({rate(sent, ROBOT + ', ' + TEAM_TOPICS)})", "{{robot}}")], unit="Bps", stack=True),
+        panel("Team bytes per second, per category",
+              "The paper's categories: pose (team/pose), incremental map (team/map), "
+              "executable path (team/path), exploration route (team/plan).",
+              [(f"sum by (category) ({by_category(rate(sent, ROBOT + ', ' + TEAM_TOPICS))})", "{{category}}")],
+              unit="Bps", stack=True),
+        panel("Cumulative team KB, per robot",
+              "Total kilobytes (1 KB = 1024 bytes) each robot has sent on the team topics since it started.",
+              [(f"sum by (robot) ({sent}{{{ROBOT}, {TEAM_TOPICS}}}) / 1024", "{{robot}}")], unit="none"),
+        panel("Cumulative team KB, per category",
+              "Total kilobytes sent by the selected robots, per communication category (the paper's table).",
+              [(f"sum by (category) ({by_category(f'{sent}{{{ROBOT}, {TEAM_TOPICS}}}')}) / 1024", "{{category}}")],
+              unit="none"),
+        panel("Team bytes received per second, per robot",
+              "Bytes each robot accepts from its teammates on the team topics.",
+              [(f"sum by (robot) ({rate('hexplore_transport_received_bytes_total', ROBOT + ', ' + TEAM_TOPICS)})",
+                "{{robot}}")], unit="Bps", stack=True),
+        panel("Messages per second, per topic",
+              "Messages sent on each team topic by the selected robots.",
+              [(f"sum by (topic) ({rate('hexplore_transport_sent_messages_total', ROBOT + ', ' + TEAM_TOPICS)})",
+                "{{topic}}")], unit="short"),
+        panel("Message latency p50 / p99, per topic",
+              "Receive wall time minus the sender's header send time, from the receivers' histograms.",
+              [(f"histogram_quantile(0.5, sum by (le, topic) "
+                f"({rate('hexplore_transport_latency_seconds_bucket', ROBOT)}))", "{{topic}} p50"),
+               (f"histogram_quantile(0.99, sum by (le, topic) "
+                f"({rate('hexplore_transport_latency_seconds_bucket', ROBOT)}))", "{{topic}} p99")],
+              unit="s", w=24),
+    ]
+    panels += communication_map_panels()
+    return dashboard("hexplore-communication", "hexplore / communication",
+                     "What the robots send each other: bytes per robot and per category, latency, map gaps.",
+                     panels)
+
+
+def communication_map_panels():
+    return []
+
+
+# ---------------------------------------------------------------- services
+def services():
+    dropped = "hexplore_transport_dropped_total"
+    panels = [
+        panel("CPU per service",
+              "CPU time (user + system) per second of each service process; 1.0 = one core.",
+              [(f"sum by (robot, service) ({rate('hexplore_process_cpu_seconds_total', ROBOT)})",
+                "{{robot}} {{service}}")], unit="percentunit"),
+        panel("CPU seconds per service, cumulative",
+              "CPU seconds each service has used since it started.",
+              [(f"sum by (robot, service) (hexplore_process_cpu_seconds_total{{{ROBOT}}})",
+                "{{robot}} {{service}}")], unit="s"),
+        panel("Messages dropped per second, by reason",
+              "Messages lost in transport: injected faults, request time-outs, failed sends.",
+              [(f"sum by (service, topic, reason) ({rate(dropped, ROBOT + ', ' + LOST_REASONS)})",
+                "{{service}} {{topic}} {{reason}}")], unit="short"),
+        panel("Messages rejected per second, by reason",
+              "Frames a receiver refused: malformed, wrong schema version, wrong payload type, oversize.",
+              [(f"sum by (service, topic, reason) ({rate(dropped, ROBOT + ', ' + REJECT_REASONS)})",
+                "{{service}} {{topic}} {{reason}}")], unit="short"),
+        panel("Drops and rejections, total",
+              "All messages dropped or rejected since the services started, by reason.",
+              [(f"sum by (reason) ({dropped}{{{ROBOT}}})", "{{reason}}")], unit="short", kind="stat"),
+        panel("Service uptime",
+              "Seconds since each service process started; a reset means a restart.",
+              [(f"max by (robot, service) (hexplore_process_uptime_seconds{{{ROBOT}}})", "{{robot}} {{service}}")],
+              unit="s"),
+    ]
+    panels += service_stage_panels()
+    return dashboard("hexplore-services", "hexplore / services",
+                     "Per-service cost: CPU, pipeline stage durations, dropped and rejected messages.", panels)
+
+
+def service_stage_panels():
+    return []
+
+
+# ---------------------------------------------------------------- team overview
+def team_overview():
+    panels = [
+        panel("Services up, per robot",
+              "Number of service processes of each robot whose metrics Prometheus reads.",
+              [(f"count by (robot) (hexplore_process_uptime_seconds{{{ROBOT}}})", "{{robot}}")],
+              unit="short", kind="stat", w=24, h=4),
+    ]
+    panels += team_panels()
+    return dashboard("hexplore-team-overview", "hexplore / team overview",
+                     "The exploration as it happens: completeness, robots, planning.", panels)
+
+
+def team_panels():
+    return []
+
+
+DASHBOARDS = {
+    "hexplore-team-overview.json": team_overview,
+    "hexplore-communication.json": communication,
+    "hexplore-services.json": services,
+}
+
+
+def render(make):
+    return json.dumps(make(), indent=2, sort_keys=False) + "\n"
+
+
+def main(argv):
+    out_dir = pathlib.Path(argv[1]) if len(argv) > 1 else pathlib.Path(__file__).resolve().parent
+    for name, make in DASHBOARDS.items():
+        (out_dir / name).write_text(render(make))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
