@@ -1,0 +1,89 @@
+#include "common/highlevel/high_level_map.h"
+
+#include <algorithm>
+
+namespace hexplore::highlevel {
+
+HighLevelMap::HighLevelMap(std::vector<int> species_levels)
+    : levels_(species_levels), graph_(std::move(species_levels)) {}
+
+void HighLevelMap::clear() {
+  supervoxels_.clear();
+  edges_.clear();
+  incident_.clear();
+  graph_.clear();
+}
+
+const Supervoxel* HighLevelMap::find(uint64_t key) const {
+  auto it = supervoxels_.find(key);
+  return it == supervoxels_.end() ? nullptr : &it->second;
+}
+
+// Makes the graph vertex of `key` match its supervoxel, then its incident edges.
+void HighLevelMap::sync_vertex(uint64_t key) {
+  const Supervoxel* sv = find(key);
+  if (sv == nullptr || !sv->traversable()) {
+    graph_.remove_vertex(key);
+    return;
+  }
+  graph_.upsert_vertex(key, sv->center, sv->traversal_requirement);
+  auto it = incident_.find(key);
+  if (it == incident_.end()) return;
+  for (uint64_t other : it->second) sync_edge(EdgeKey::of(key, other));
+}
+
+void HighLevelMap::sync_edge(const EdgeKey& e) {
+  const Supervoxel* a = find(e.a);
+  const Supervoxel* b = find(e.b);
+  if (edges_.count(e) == 0 || a == nullptr || b == nullptr || !a->traversable() || !b->traversable()) {
+    graph_.remove_edge(e.a, e.b);
+    return;
+  }
+  graph_.upsert_edge(e.a, e.b, (a->center - b->center).norm());
+}
+
+void HighLevelMap::apply(const MapUpdate& update) {
+  if (update.empty()) return;
+  if (update.full_snapshot) clear();
+  for (uint64_t key : update.removals) {
+    supervoxels_.erase(key);
+    graph_.remove_vertex(key);
+  }
+  for (const EdgeKey& e : update.edge_removals) {
+    if (edges_.erase(e) == 0) continue;
+    for (auto [x, y] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}}) {
+      auto it = incident_.find(x);
+      if (it == incident_.end()) continue;
+      auto& v = it->second;
+      v.erase(std::remove(v.begin(), v.end(), y), v.end());
+      if (v.empty()) incident_.erase(it);
+    }
+    graph_.remove_edge(e.a, e.b);
+  }
+  for (const Supervoxel& sv : update.upserts) supervoxels_[sv.key] = sv;
+  for (const EdgeKey& e : update.edge_upserts) {
+    if (e.a == e.b || !edges_.insert(EdgeKey::of(e.a, e.b)).second) continue;
+    incident_[e.a].push_back(e.b);
+    incident_[e.b].push_back(e.a);
+  }
+  // Vertices first (an edge needs both ends), then every edge touching a changed vertex.
+  for (const Supervoxel& sv : update.upserts) sync_vertex(sv.key);
+  for (const EdgeKey& e : update.edge_upserts) sync_edge(EdgeKey::of(e.a, e.b));
+  ++version_;
+}
+
+MapUpdate HighLevelMap::snapshot() const {
+  MapUpdate u;
+  u.full_snapshot = true;
+  u.version = version_;
+  u.upserts.reserve(supervoxels_.size());
+  for (const auto& [key, sv] : supervoxels_) u.upserts.push_back(sv);
+  u.edge_upserts.assign(edges_.begin(), edges_.end());
+  return u;
+}
+
+bool same_map(const HighLevelMap& a, const HighLevelMap& b) {
+  return a.supervoxels() == b.supervoxels() && a.edges() == b.edges();
+}
+
+}  // namespace hexplore::highlevel
