@@ -61,7 +61,8 @@ class Ga {
     Individual best = *std::min_element(pop.begin(), pop.end(), by_fitness);
     GaResult result;
     result.initial_best_fitness = best.fitness;
-    if (o_.local_search == LocalSearchMode::kMemetic) improve(best, deadline);
+    if (o_.local_search == LocalSearchMode::kMemetic || o_.local_search == LocalSearchMode::kOffspring)
+      improve(best, deadline);
 
     std::vector<Individual> next(static_cast<size_t>(size));
     std::vector<int> order(static_cast<size_t>(size));
@@ -85,6 +86,7 @@ class Ga {
           Individual& child = next[size_t(g + k)];
           child.routes = parent.routes;
           mutate(child.routes, ops_[size_t(k % int(ops_.size()))], k >= int(ops_.size()));
+          if (o_.local_search == LocalSearchMode::kOffspring) local_search(m_, child.routes, deadline);
           child.fitness = evaluate(child.routes);
         }
       }

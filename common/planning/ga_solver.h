@@ -19,6 +19,7 @@ enum class LocalSearchMode {
   kNone,     // the paper's mutation-only GA
   kFinal,    // local search on the final best
   kMemetic,  // also on every new global best during the run, fed back into the population
+  kOffspring,  // on every mutant (a memetic GA: mutations perturb local optima)
 };
 
 struct GaOptions {
