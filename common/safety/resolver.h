@@ -1,0 +1,103 @@
+#pragma once
+// Per-robot path-conflict resolution (paper "Path-Conflict Resolution Strategy"): each cycle
+// the robot's desired path is detoured around stationary teammates' boxes, checked against the
+// moving teammates' shared fragments, and cut short where the robot must yield. The robot that
+// would reach the conflict zone later yields; near-equal times go to the lower robot id.
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "common/safety/conflict.h"
+#include "common/safety/fragment.h"
+#include "common/safety/polyline.h"
+
+namespace hexplore::safety {
+
+// Tunables; distances in metres, times in seconds.
+struct SafetyOptions {
+  double eta_p_m = 2.0;              // shared fragment length (paper eta_p)
+  double conflict_margin_m = 0.5;    // conflict zone = sum of body radii + this
+  double obstacle_margin_m = 0.2;    // a stopped robot's box grows by own radius + this
+  double detour_clearance_m = 0.2;   // detour waypoints sit this far outside the grown box
+  double hard_margin_m = 0.1;        // never approach a moving teammate closer than radii + this
+  double cycle_s = 0.2;              // decision period: how far both may move before the next one
+  double extrapolate_m = 1.0;        // a fragment cut at eta_p continues this far straight on
+  double tie_window_s = 0.5;         // arrival times in the same window tie -> lower id first
+  double deadlock_timeout_s = 3.0;   // yield to a robot that stopped waiting for nobody ends then
+  double stop_buffer_m = 0.1;        // yielding robots stop this far before the zone
+  double min_move_m = 0.05;          // shorter approved paths are a Stop
+  double sample_step_m = 0.1;        // path sampling for conflict search
+
+  // Throws std::invalid_argument naming the first bad field.
+  void validate() const;
+};
+
+enum class DecisionKind { kFollow, kStop };
+
+// What goes to the robot driver: an approved path (FollowPath) or a Stop with its reason.
+struct Decision {
+  DecisionKind kind = DecisionKind::kStop;
+  Path waypoints;                 // approved path, starting at the robot (kFollow)
+  double speed_mps = 0.0;
+  std::string reason;             // why it stopped or was cut short ("" when unrestricted)
+  std::string yielding_to;        // robot waited for, "" when not yielding
+  bool detoured = false;          // path bends around a stationary teammate
+};
+
+struct ResolverCounters {
+  uint64_t conflicts_detected = 0;   // peer conflicts that newly appeared
+  uint64_t yields = 0;               // times this robot started yielding to a peer
+  uint64_t detours = 0;              // times a detour around a stopped peer began
+  uint64_t deadlock_breaks = 0;      // yields ended by the mutual-wait or timeout rules
+  uint64_t blocked = 0;              // decisions cut short before an impassable box
+};
+
+class ConflictResolver {
+ public:
+  ConflictResolver(std::string robot_id, const Eigen::Vector3d& body_half_extents_m, SafetyOptions options);
+
+  // One decision for a robot at `position` that wants to drive `desired_path` at `speed_mps`,
+  // given the teammates' latest fragments (own id and unknown order are fine). `now_s` is any
+  // monotonic clock in seconds (sim time in tests).
+  Decision decide(const Eigen::Vector3d& position, const Path& desired_path, double speed_mps,
+                  const std::vector<Fragment>& peers, double now_s);
+
+  // The fragment to share after the last decision: its approved path within eta_p.
+  Fragment fragment(const Eigen::Vector3d& position) const;
+
+  // Forgets yields and conflicts (mission restart, emergency stop).
+  void reset();
+
+  const ResolverCounters& counters() const { return counters_; }
+  const std::string& robot_id() const { return robot_id_; }
+  double body_radius_m() const { return radius_m_; }
+  const SafetyOptions& options() const { return options_; }
+
+ private:
+  struct YieldRecord {
+    double since_s = 0.0;
+    ConflictKind kind = ConflictKind::kCrossing;
+  };
+
+  Decision stop(std::string reason, std::string yielding_to);
+
+  std::string robot_id_;
+  Eigen::Vector3d half_extents_m_;
+  double radius_m_;
+  SafetyOptions options_;
+  std::map<std::string, YieldRecord> yields_;   // peers this robot currently yields to
+  std::set<std::string> conflicting_;           // peers in conflict at the last decision
+  bool stationary_ = true;
+  bool was_detoured_ = false;
+  Path detour_path_;                            // the detour being followed
+  Path detour_for_;                             // the desired path it was made for
+  Decision last_;
+  ResolverCounters counters_;
+};
+
+}  // namespace hexplore::safety

@@ -1,0 +1,164 @@
+#include "common/safety/resolver.h"
+
+#include <gtest/gtest.h>
+
+namespace hexplore::safety {
+namespace {
+
+using V = Eigen::Vector3d;
+const V kHalf(0.45, 0.3, 0.2);  // SLUGCAT-sized body, radius ~0.54 m
+
+Fragment moving(const std::string& id, const V& from, const V& to, double speed, const std::string& yielding_to = "") {
+  Fragment f;
+  f.robot_id = id;
+  f.position_m = from;
+  f.waypoints_m = truncate_to_length({from, to}, 2.0);
+  f.waypoints_m.erase(f.waypoints_m.begin());
+  f.speed_mps = speed;
+  f.stationary = false;
+  f.yielding_to = yielding_to;
+  body_box_any_yaw(from, kHalf, f.box_min_m, f.box_max_m);
+  return f;
+}
+
+Fragment standing(const std::string& id, const V& at, const std::string& yielding_to = "") {
+  Fragment f;
+  f.robot_id = id;
+  f.position_m = at;
+  f.stationary = true;
+  f.yielding_to = yielding_to;
+  body_box_any_yaw(at, kHalf, f.box_min_m, f.box_max_m);
+  return f;
+}
+
+// A resolver that has already been moving (so its own arrival time is finite).
+ConflictResolver moving_resolver(const std::string& id, const V& at, const Path& plan, double speed) {
+  ConflictResolver r(id, kHalf, SafetyOptions{});
+  r.decide(at, plan, speed, {}, 0.0);
+  return r;
+}
+
+TEST(Resolver, FreePathIsApprovedWhole) {
+  ConflictResolver r("a", kHalf, SafetyOptions{});
+  const Path plan{V(0, 0, 0), V(10, 0, 0)};
+  const auto d = r.decide(V(0, 0, 0), plan, 0.5, {moving("b", V(0, 8, 0), V(10, 8, 0), 0.5)}, 0.0);
+  EXPECT_EQ(d.kind, DecisionKind::kFollow);
+  EXPECT_NEAR(path_length(d.waypoints), 10.0, 1e-9);
+  EXPECT_TRUE(d.reason.empty());
+  const Fragment f = r.fragment(V(0, 0, 0));
+  EXPECT_NEAR(path_length(f.path()), 2.0, 1e-9);  // only eta_p is shared
+  EXPECT_FALSE(f.stationary);
+}
+
+TEST(Resolver, LaterArrivalYieldsEarlierGoes) {
+  // a is 1.5 m from the crossing, b 2.5 m: b yields and stops before the zone; a goes.
+  const Path plan_a{V(-1.5, 0, 0), V(5, 0, 0)};
+  const Path plan_b{V(0, -2.5, 0), V(0, 5, 0)};
+  auto a = moving_resolver("a", plan_a[0], plan_a, 0.5);
+  auto b = moving_resolver("b", plan_b[0], plan_b, 0.5);
+  const auto fa = a.fragment(plan_a[0]);
+  const auto fb = b.fragment(plan_b[0]);
+  const auto da = a.decide(plan_a[0], plan_a, 0.5, {fb}, 0.1);
+  const auto db = b.decide(plan_b[0], plan_b, 0.5, {fa}, 0.1);
+  EXPECT_EQ(da.kind, DecisionKind::kFollow);
+  EXPECT_TRUE(da.yielding_to.empty());
+  EXPECT_EQ(db.yielding_to, "a");
+  EXPECT_EQ(b.counters().yields, 1u);
+  EXPECT_EQ(b.counters().conflicts_detected, 1u);
+  // b's approved path ends before it comes within the safety distance of a's path.
+  const V b_end = db.kind == DecisionKind::kFollow ? db.waypoints.back() : plan_b[0];
+  EXPECT_LT(b_end.y(), -(2 * 0.5408 + 0.5) + 0.2);
+}
+
+TEST(Resolver, TieGoesToTheLowerId) {
+  const Path plan_a{V(-3, 0, 0), V(5, 0, 0)};
+  const Path plan_b{V(0, -3, 0), V(0, 5, 0)};
+  auto a = moving_resolver("a", plan_a[0], plan_a, 0.5);
+  auto b = moving_resolver("b", plan_b[0], plan_b, 0.5);
+  const auto fa = a.fragment(plan_a[0]);
+  const auto fb = b.fragment(plan_b[0]);
+  EXPECT_TRUE(a.decide(plan_a[0], plan_a, 0.5, {fb}, 0.1).yielding_to.empty());
+  EXPECT_EQ(b.decide(plan_b[0], plan_b, 0.5, {fa}, 0.1).yielding_to, "a");
+}
+
+TEST(Resolver, PeerThatYieldsToMeIsNotYieldedTo) {
+  const Path plan_b{V(0, -1.5, 0), V(0, 5, 0)};
+  auto b = moving_resolver("b", plan_b[0], plan_b, 0.5);
+  // a would have priority by id and time, but it declares that it waits for b.
+  const auto d = b.decide(plan_b[0], plan_b, 0.5, {moving("a", V(-1.5, 0, 0), V(5, 0, 0), 0.5, "b")}, 0.1);
+  EXPECT_TRUE(d.yielding_to.empty());
+}
+
+TEST(Resolver, MutualWaitIsBrokenByTheLowerId) {
+  const Path plan_a{V(-3, 0, 0), V(5, 0, 0)};
+  const Path plan_b{V(0, -3, 0), V(0, 5, 0)};
+  // Make both yield: each sees the other as already moving and closer.
+  auto a = moving_resolver("a", plan_a[0], plan_a, 0.5);
+  auto b = moving_resolver("b", plan_b[0], plan_b, 0.5);
+  a.decide(plan_a[0], plan_a, 0.5, {moving("b", V(0, -1.6, 0), V(0, 5, 0), 0.5)}, 0.1);
+  b.decide(plan_b[0], plan_b, 0.5, {moving("a", V(-3, 0, 0), V(5, 0, 0), 0.5)}, 0.1);
+  ASSERT_EQ(a.fragment(plan_a[0]).yielding_to, "b");
+  ASSERT_EQ(b.fragment(plan_b[0]).yielding_to, "a");
+  // Now each hears that the other waits for it (both still short of the crossing).
+  const auto da = a.decide(plan_a[0], plan_a, 0.5, {moving("b", V(0, -1.6, 0), V(0, 5, 0), 0.5, "a")}, 0.2);
+  const auto db = b.decide(plan_b[0], plan_b, 0.5, {moving("a", V(-1.6, 0, 0), V(5, 0, 0), 0.5, "b")}, 0.2);
+  EXPECT_TRUE(da.yielding_to.empty());
+  EXPECT_EQ(da.kind, DecisionKind::kFollow);
+  EXPECT_EQ(db.yielding_to, "a");
+  EXPECT_EQ(a.counters().deadlock_breaks, 1u);
+}
+
+TEST(Resolver, YieldToARobotStoppedForItsOwnReasonsEndsAfterTheTimeout) {
+  const Path plan{V(0, -3, 0), V(0, 5, 0)};
+  auto b = moving_resolver("b", plan[0], plan, 0.5);
+  // a (lower id, equal time) is moving: b yields.
+  ASSERT_EQ(b.decide(plan[0], plan, 0.5, {moving("a", V(-3, 0, 0), V(5, 0, 0), 0.5)}, 0.0).yielding_to, "a");
+  // a stops right at the crossing, waiting for nobody (e.g. scanning or blocked).
+  const auto a_stopped = standing("a", V(-0.4, 0, 0));
+  EXPECT_EQ(b.decide(plan[0], plan, 0.5, {a_stopped}, 1.0).yielding_to, "a");
+  const auto after = b.decide(plan[0], plan, 0.5, {a_stopped}, 5.0);
+  EXPECT_TRUE(after.yielding_to.empty());
+  EXPECT_EQ(after.kind, DecisionKind::kFollow);
+  EXPECT_TRUE(after.detoured);  // and it drives around a's box
+  EXPECT_EQ(b.counters().deadlock_breaks, 1u);
+}
+
+TEST(Resolver, StationaryRobotOnThePathIsDetoured) {
+  ConflictResolver r("a", kHalf, SafetyOptions{});
+  const Path plan{V(-5, 0, 0), V(5, 0, 0)};
+  const auto d = r.decide(plan[0], plan, 0.5, {standing("c", V(0, 0, 0))}, 0.0);
+  ASSERT_EQ(d.kind, DecisionKind::kFollow);
+  EXPECT_TRUE(d.detoured);
+  EXPECT_TRUE(d.waypoints.back().isApprox(plan.back()));
+  const double clearance = 2 * body_radius_of(kHalf);
+  for (const auto& s : sample_path(d.waypoints, 0.02)) EXPECT_GT(distance_xy(s.point, V(0, 0, 0)), clearance);
+  EXPECT_EQ(r.counters().detours, 1u);
+}
+
+TEST(Resolver, GoalOccupiedByAStoppedRobotStopsBeforeIt) {
+  ConflictResolver r("a", kHalf, SafetyOptions{});
+  const Path plan{V(-5, 0, 0), V(0, 0, 0)};
+  const auto d = r.decide(plan[0], plan, 0.5, {standing("c", V(0, 0, 0))}, 0.0);
+  ASSERT_EQ(d.kind, DecisionKind::kFollow);
+  EXPECT_NE(d.reason.find("blocked by stationary robot c"), std::string::npos);
+  EXPECT_LT(d.waypoints.back().x(), -2 * body_radius_of(kHalf));
+  const auto at_box = r.decide(d.waypoints.back(), plan, 0.5, {standing("c", V(0, 0, 0))}, 1.0);
+  EXPECT_EQ(at_box.kind, DecisionKind::kStop);
+}
+
+TEST(Resolver, OptionsAreValidated) {
+  SafetyOptions bad;
+  bad.eta_p_m = -1;
+  EXPECT_THROW(ConflictResolver("a", kHalf, bad), std::invalid_argument);
+  EXPECT_THROW(ConflictResolver("", kHalf, SafetyOptions{}), std::invalid_argument);
+}
+
+TEST(Resolver, NoPathMeansStop) {
+  ConflictResolver r("a", kHalf, SafetyOptions{});
+  const auto d = r.decide(V(0, 0, 0), {}, 0.5, {}, 0.0);
+  EXPECT_EQ(d.kind, DecisionKind::kStop);
+  EXPECT_TRUE(r.fragment(V(0, 0, 0)).stationary);
+}
+
+}  // namespace
+}  // namespace hexplore::safety

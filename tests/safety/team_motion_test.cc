@@ -1,0 +1,211 @@
+// Two and three robots driving planned paths in a small kinematic loop: each cycle every robot
+// decides on the fragments its teammates shared one cycle earlier, then moves along its
+// approved path. Checks: no two bodies ever touch, everyone reaches its goal in bounded time,
+// stopped robots are driven around, and runs are bit-identical.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+#include "common/safety/resolver.h"
+
+namespace hexplore::safety {
+namespace {
+
+using V = Eigen::Vector3d;
+const V kSlugcat(0.45, 0.3, 0.2);
+const V kMr1000(0.5, 0.35, 0.4);
+
+struct Robot {
+  std::string id;
+  V half;
+  double speed;
+  Path plan;  // empty: stands still the whole run (an obstacle)
+  V position;
+  std::unique_ptr<ConflictResolver> resolver;
+  Decision command;
+  double arrived_at = -1.0;
+};
+
+Robot make_robot(const std::string& id, const V& half, double speed, Path plan) {
+  Robot r{id, half, speed, plan, plan.front(), std::make_unique<ConflictResolver>(id, half, SafetyOptions{}), {}};
+  return r;
+}
+
+// Moves `step_m` along the approved path from its start.
+V move_along(const Path& path, double step_m) { return point_at(path, step_m); }
+
+struct RunResult {
+  double min_gap = std::numeric_limits<double>::infinity();  // centre distance minus radii sum
+  double end_time = 0.0;
+  bool all_arrived = false;
+  std::string trace;  // positions, for determinism checks
+  std::vector<ResolverCounters> counters;
+};
+
+RunResult run(std::vector<Robot>& robots, double time_limit_s, double dt = 0.1) {
+  RunResult result;
+  std::ostringstream trace;
+  trace.precision(17);
+  double t = 0.0;
+  for (; t < time_limit_s; t += dt) {
+    std::vector<Fragment> shared;
+    for (auto& r : robots) shared.push_back(r.resolver->fragment(r.position));
+    for (auto& r : robots) {
+      r.command = r.resolver->decide(r.position, r.plan, r.speed, shared, t);
+    }
+    bool all = true;
+    for (auto& r : robots) {
+      if (r.command.kind == DecisionKind::kFollow) r.position = move_along(r.command.waypoints, r.speed * dt);
+      if (!r.plan.empty() && r.arrived_at < 0 && distance_xy(r.position, r.plan.back()) < 0.06) r.arrived_at = t;
+      if (!r.plan.empty() && r.arrived_at < 0) all = false;
+      trace << r.position.x() << ',' << r.position.y() << ';';
+      if (std::getenv("SAFETY_TRACE")) {
+        std::printf("t=%.1f %s (%.2f,%.2f) %s %s\n", t, r.id.c_str(), r.position.x(), r.position.y(),
+                    r.command.kind == DecisionKind::kFollow ? "follow" : "stop", r.command.reason.c_str());
+      }
+    }
+    for (size_t i = 0; i < robots.size(); ++i) {
+      for (size_t j = i + 1; j < robots.size(); ++j) {
+        const double gap = distance_xy(robots[i].position, robots[j].position) - body_radius_of(robots[i].half) -
+                           body_radius_of(robots[j].half);
+        result.min_gap = std::min(result.min_gap, gap);
+      }
+    }
+    if (all) {
+      result.all_arrived = true;
+      break;
+    }
+  }
+  result.end_time = t;
+  result.trace = trace.str();
+  for (auto& r : robots) result.counters.push_back(r.resolver->counters());
+  return result;
+}
+
+// Time a robot would need alone, plus slack for waiting and detours.
+double bound_for(const std::vector<Robot>& robots) {
+  double worst = 0.0;
+  for (const auto& r : robots) {
+    if (!r.plan.empty()) worst = std::max(worst, path_length(r.plan) / r.speed);
+  }
+  return 2.0 * worst + 20.0;
+}
+
+uint64_t total(const RunResult& r, uint64_t ResolverCounters::*field) {
+  uint64_t n = 0;
+  for (const auto& c : r.counters) n += c.*field;
+  return n;
+}
+
+TEST(TeamMotion, TwoRobotsCrossingEqualTiming) {
+  std::vector<Robot> robots;
+  robots.push_back(make_robot("r1", kSlugcat, 0.5, {V(-6, 0, 0), V(6, 0, 0)}));
+  robots.push_back(make_robot("r2", kSlugcat, 0.5, {V(0, -6, 0), V(0, 6, 0)}));
+  const auto result = run(robots, bound_for(robots));
+  EXPECT_TRUE(result.all_arrived) << "stuck at t=" << result.end_time;
+  EXPECT_GT(result.min_gap, 0.0);
+  EXPECT_GE(total(result, &ResolverCounters::yields), 1u);
+  EXPECT_EQ(result.counters[0].yields, 0u);  // equal times: the lower id went first
+}
+
+TEST(TeamMotion, TwoHeterogeneousRobotsCrossingAtAnAngle) {
+  std::vector<Robot> robots;
+  robots.push_back(make_robot("slugcat1", kSlugcat, 0.4, {V(-5, -2, 0), V(5, 2, 0)}));
+  robots.push_back(make_robot("mr1000a", kMr1000, 0.5, {V(2, -6, 0), V(-1, 6, 0)}));
+  const auto result = run(robots, bound_for(robots));
+  EXPECT_TRUE(result.all_arrived) << "stuck at t=" << result.end_time;
+  EXPECT_GT(result.min_gap, 0.0);
+  EXPECT_GE(total(result, &ResolverCounters::conflicts_detected), 1u);
+}
+
+TEST(TeamMotion, TwoRobotsHeadOnPassEachOther) {
+  std::vector<Robot> robots;
+  robots.push_back(make_robot("a", kSlugcat, 0.4, {V(-6, 0, 0), V(8, 0, 0)}));
+  robots.push_back(make_robot("b", kMr1000, 0.5, {V(6, 0.1, 0), V(-8, 0.1, 0)}));
+  const auto result = run(robots, bound_for(robots));
+  EXPECT_TRUE(result.all_arrived) << "stuck at t=" << result.end_time;
+  EXPECT_GT(result.min_gap, 0.0);
+  EXPECT_GE(total(result, &ResolverCounters::yields), 1u);
+  EXPECT_GE(total(result, &ResolverCounters::detours), 1u);
+}
+
+TEST(TeamMotion, TwoRobotsSwapPlaces) {
+  // Each goal is the other's start: the winner is blocked at the loser's box until the loser
+  // gives up waiting and drives around it.
+  std::vector<Robot> robots;
+  robots.push_back(make_robot("a", kSlugcat, 0.5, {V(-4, 0, 0), V(4, 0, 0)}));
+  robots.push_back(make_robot("b", kSlugcat, 0.5, {V(4, 0, 0), V(-4, 0, 0)}));
+  const auto result = run(robots, bound_for(robots) + 20.0);
+  EXPECT_TRUE(result.all_arrived) << "stuck at t=" << result.end_time;
+  EXPECT_GT(result.min_gap, 0.0);
+}
+
+TEST(TeamMotion, RobotFollowingASlowerOneKeepsItsDistance) {
+  std::vector<Robot> robots;
+  robots.push_back(make_robot("fast", kMr1000, 0.5, {V(-3, 0, 0), V(10, 0, 0)}));
+  robots.push_back(make_robot("slow", kSlugcat, 0.3, {V(0, 0, 0), V(8, 0, 0)}));
+  const auto result = run(robots, bound_for(robots) + 40.0);
+  EXPECT_TRUE(result.all_arrived) << "stuck at t=" << result.end_time;
+  EXPECT_GT(result.min_gap, 0.0);
+}
+
+TEST(TeamMotion, ThreeRobotsMeetAtOneCrossing) {
+  std::vector<Robot> robots;
+  const double r = 6.0;
+  for (int k = 0; k < 3; ++k) {
+    const double a = 2.0 * M_PI * k / 3.0;
+    const V from(r * std::cos(a), r * std::sin(a), 0);
+    robots.push_back(make_robot("r" + std::to_string(k + 1), k == 1 ? kMr1000 : kSlugcat, 0.5, {from, -from}));
+  }
+  const auto result = run(robots, bound_for(robots) + 20.0);
+  EXPECT_TRUE(result.all_arrived) << "stuck at t=" << result.end_time;
+  EXPECT_GT(result.min_gap, 0.0);
+  EXPECT_GE(total(result, &ResolverCounters::yields), 2u);
+}
+
+TEST(TeamMotion, ThreeRobotsHeadOnAndCrossing) {
+  std::vector<Robot> robots;
+  robots.push_back(make_robot("a", kSlugcat, 0.4, {V(-6, 0, 0), V(7, 0, 0)}));
+  robots.push_back(make_robot("b", kMr1000, 0.5, {V(6, 0.2, 0), V(-7, 0.2, 0)}));
+  robots.push_back(make_robot("c", kSlugcat, 0.4, {V(0.5, -6, 0), V(0.5, 7, 0)}));
+  const auto result = run(robots, bound_for(robots) + 20.0);
+  EXPECT_TRUE(result.all_arrived) << "stuck at t=" << result.end_time;
+  EXPECT_GT(result.min_gap, 0.0);
+}
+
+TEST(TeamMotion, StoppedRobotIsDrivenAround) {
+  std::vector<Robot> robots;
+  robots.push_back(make_robot("mover", kMr1000, 0.5, {V(-6, 0, 0), V(6, 0, 0)}));
+  Robot parked = make_robot("parked", kSlugcat, 0.4, {V(0, 0.3, 0)});
+  parked.plan.clear();
+  robots.push_back(std::move(parked));
+  const auto result = run(robots, bound_for(robots));
+  EXPECT_TRUE(result.all_arrived) << "stuck at t=" << result.end_time;
+  EXPECT_GT(result.min_gap, 0.0);
+  EXPECT_GE(result.counters[0].detours, 1u);
+  EXPECT_EQ(result.counters[0].yields, 0u);
+}
+
+TEST(TeamMotion, RunsAreDeterministic) {
+  auto scenario = [] {
+    std::vector<Robot> robots;
+    robots.push_back(make_robot("a", kSlugcat, 0.4, {V(-6, 0, 0), V(7, 0, 0)}));
+    robots.push_back(make_robot("b", kMr1000, 0.5, {V(6, 0.2, 0), V(-7, 0.2, 0)}));
+    robots.push_back(make_robot("c", kSlugcat, 0.4, {V(0.5, -6, 0), V(0.5, 7, 0)}));
+    return robots;
+  };
+  auto first = scenario();
+  auto second = scenario();
+  const auto r1 = run(first, 80.0);
+  const auto r2 = run(second, 80.0);
+  EXPECT_EQ(r1.trace, r2.trace);
+  EXPECT_EQ(r1.end_time, r2.end_time);
+}
+
+}  // namespace
+}  // namespace hexplore::safety
