@@ -1,0 +1,108 @@
+#include "common/station/team_recorder.h"
+
+#include <algorithm>
+
+namespace hexplore::station {
+namespace {
+
+// Trajectory points closer than this (in time and space) to the previous one are not stored;
+// lengths are still accumulated from every pose.
+constexpr double kMinSampleSpacingM = 0.25;
+constexpr double kMinSamplePeriodS = 2.0;
+
+std::optional<double> status_value(const v1::ServiceStatus& status, std::string_view name) {
+  for (const auto& v : status.values())
+    if (v.name() == name) return v.value();
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> communication_category(std::string_view topic) {
+  if (topic == "team/pose") return "pose";
+  if (topic == "team/map") return "incremental_map";
+  if (topic == "team/path") return "executable_path";
+  if (topic == "team/plan") return "exploration_route";
+  return std::nullopt;
+}
+
+TeamRecorder::TeamRecorder(const core::TeamConfig& team) : team_(&team) {
+  record_.scene = team.scene;
+  record_.planner = team.params.planner;
+  record_.seed = team.params.seed;
+  for (const auto& robot : team.robots) record_.robots[robot.id].species = robot.species;
+}
+
+void TeamRecorder::start(double sim_time_s) {
+  start_s_ = sim_time_s;
+  latest_sim_time_s_ = std::max(latest_sim_time_s_, sim_time_s);
+  for (auto& [_, track] : record_.robots) {
+    track.times_s.clear();
+    track.positions_m.clear();
+    track.length_m = 0.0;
+  }
+  start_odometry_m_.clear();
+  chord_length_m_.clear();
+  for (auto& [_, categories] : record_.team_bytes) categories.clear();
+  record_.completeness.clear();
+  record_.planning_times_s.clear();
+}
+
+double TeamRecorder::mission_time_s() const {
+  return start_s_ ? std::max(0.0, latest_sim_time_s_ - *start_s_) : 0.0;
+}
+
+bool TeamRecorder::on_pose(const std::string& robot, double sim_time_s, const v1::RobotPose& pose) {
+  auto it = record_.robots.find(robot);
+  if (it == record_.robots.end()) return false;
+  latest_sim_time_s_ = std::max(latest_sim_time_s_, sim_time_s);
+  auto& track = it->second;
+  track.collisions = pose.collisions();
+  track.last_state = v1::MotionState_Name(pose.state());
+  if (!start_s_) return true;
+  const Eigen::Vector3d p(pose.pose().position_m().x(), pose.pose().position_m().y(), pose.pose().position_m().z());
+  if (!p.allFinite()) return false;
+  const double t = sim_time_s - *start_s_;
+  // The sim integrates odometry every motion step; the chord sum of sampled poses is the
+  // fallback for drivers that do not report it.
+  const double start_odometry = start_odometry_m_.try_emplace(robot, pose.odometry_m()).first->second;
+  if (track.positions_m.empty()) {
+    track.positions_m.push_back(p);
+    track.times_s.push_back(t);
+    return true;
+  }
+  const double step = (p - track.positions_m.back()).norm();
+  if (step >= kMinSampleSpacingM || t - track.times_s.back() >= kMinSamplePeriodS) {
+    chord_length_m_[robot] += step;
+    track.positions_m.push_back(p);
+    track.times_s.push_back(t);
+  }
+  track.length_m = pose.odometry_m() > 0.0 ? pose.odometry_m() - start_odometry : chord_length_m_[robot];
+  return true;
+}
+
+void TeamRecorder::on_team_message(const std::string& robot, std::string_view topic, size_t bytes) {
+  if (!start_s_ || !record_.robots.contains(robot)) return;
+  if (const auto category = communication_category(topic)) record_.team_bytes[robot][*category] += bytes;
+}
+
+int TeamRecorder::on_planning_status(const std::string& robot, const v1::ServiceStatus& status) {
+  const auto round = status_value(status, kPlanningRound);
+  const auto time = status_value(status, kPlanningTime);
+  if (start_s_ && round && time && record_.robots.contains(robot)) {
+    auto last = last_round_.find(robot);
+    if (last == last_round_.end() || *round > last->second) {
+      record_.planning_times_s[robot].push_back(*time);
+      last_round_[robot] = *round;
+    }
+  }
+  const auto views = status_value(status, kViewsRemaining);
+  return views ? static_cast<int>(*views) : -1;
+}
+
+void TeamRecorder::on_completeness(CompletenessSample sample) {
+  if (!start_s_) return;
+  record_.completeness.push_back(std::move(sample));
+}
+
+}  // namespace hexplore::station

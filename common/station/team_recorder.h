@@ -1,0 +1,58 @@
+#pragma once
+// Turns what the station hears on the team topics into an ExperimentRecord: trajectories from
+// team/pose, communication volume per category from the size of every team message, planning
+// rounds from the planners' statuses. Pure bookkeeping; the station service feeds it.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "common/core/team_config.h"
+#include "common/station/experiment_record.h"
+#include "hexplore/v1/pose.pb.h"
+#include "hexplore/v1/status.pb.h"
+
+namespace hexplore::station {
+
+// Paper category of a team topic ("pose", "incremental_map", ...); nullopt for other topics.
+std::optional<std::string> communication_category(std::string_view topic);
+
+// Status value names the planning service reports (see services/planning).
+inline constexpr std::string_view kViewsRemaining = "views_remaining";
+inline constexpr std::string_view kPlanningRound = "round";
+inline constexpr std::string_view kPlanningTime = "planning_time_s";
+
+class TeamRecorder {
+ public:
+  explicit TeamRecorder(const core::TeamConfig& team);
+
+  // The mission starts now (sim time of the fastest robot); earlier samples are discarded.
+  void start(double sim_time_s);
+  bool started() const { return start_s_.has_value(); }
+  // Seconds since start (0 before start), from the latest sim time heard.
+  double mission_time_s() const;
+  double latest_sim_time_s() const { return latest_sim_time_s_; }
+
+  // A pose from `robot` at sim time `sim_time_s`. Unknown robots are ignored (returns false).
+  bool on_pose(const std::string& robot, double sim_time_s, const v1::RobotPose& pose);
+  // `bytes` of a message on a team topic sent by `robot` (topic + header + payload).
+  void on_team_message(const std::string& robot, std::string_view topic, size_t bytes);
+  // A planning status; records the planning time of each new round. Returns views remaining (-1 unknown).
+  int on_planning_status(const std::string& robot, const v1::ServiceStatus& status);
+  void on_completeness(CompletenessSample sample);
+
+  ExperimentRecord& record() { return record_; }
+  const ExperimentRecord& record() const { return record_; }
+
+ private:
+  const core::TeamConfig* team_;
+  ExperimentRecord record_;
+  std::optional<double> start_s_;
+  double latest_sim_time_s_ = 0.0;
+  std::map<std::string, double> last_round_;
+  std::map<std::string, double> start_odometry_m_;
+  std::map<std::string, double> chord_length_m_;
+};
+
+}  // namespace hexplore::station

@@ -1,0 +1,88 @@
+#include <gtest/gtest.h>
+
+#include "common/core/team_config.h"
+#include "common/station/team_recorder.h"
+
+namespace hexplore::station {
+namespace {
+
+core::TeamConfig team() {
+  return core::parse_team_config(
+      "species: [{builtin: SLUGCAT}, {builtin: MR1000}]\n"
+      "robots: [{id: a, species: SLUGCAT}, {id: b, species: MR1000}]\n",
+      "test");
+}
+
+v1::RobotPose pose_at(double x, double y, double odometry) {
+  v1::RobotPose p;
+  p.mutable_pose()->mutable_position_m()->set_x(x);
+  p.mutable_pose()->mutable_position_m()->set_y(y);
+  p.set_odometry_m(odometry);
+  return p;
+}
+
+v1::ServiceStatus planning_status(double round, double time_s, double views) {
+  v1::ServiceStatus s;
+  s.set_service("planning");
+  auto add = [&](std::string_view name, double value) {
+    auto* v = s.add_values();
+    v->set_name(std::string(name));
+    v->set_value(value);
+  };
+  add(kPlanningRound, round);
+  add(kPlanningTime, time_s);
+  add(kViewsRemaining, views);
+  return s;
+}
+
+TEST(TeamRecorder, CategoriesFollowThePaper) {
+  EXPECT_EQ(communication_category("team/pose"), "pose");
+  EXPECT_EQ(communication_category("team/map"), "incremental_map");
+  EXPECT_EQ(communication_category("team/path"), "executable_path");
+  EXPECT_EQ(communication_category("team/plan"), "exploration_route");
+  EXPECT_FALSE(communication_category("team/mission"));
+  EXPECT_FALSE(communication_category("robot/a/scan"));
+}
+
+TEST(TeamRecorder, IgnoresEverythingBeforeStart) {
+  const auto t = team();
+  TeamRecorder r(t);
+  r.on_pose("a", 1.0, pose_at(0, 0, 0));
+  r.on_team_message("a", "team/pose", 100);
+  EXPECT_TRUE(r.record().robots.at("a").positions_m.empty());
+  EXPECT_TRUE(r.record().team_bytes.empty());
+}
+
+TEST(TeamRecorder, TrajectoryLengthUsesOdometryAndBytesAreCategorised) {
+  const auto t = team();
+  TeamRecorder r(t);
+  r.start(10.0);
+  for (int i = 0; i <= 10; ++i) r.on_pose("a", 10.0 + i, pose_at(i * 1.0, 0.0, 5.0 + i * 1.0));
+  EXPECT_NEAR(r.record().robots.at("a").length_m, 10.0, 1e-9);
+  EXPECT_EQ(r.record().robots.at("a").positions_m.size(), 11u);
+  EXPECT_NEAR(r.mission_time_s(), 10.0, 1e-9);
+  r.on_team_message("a", "team/map", 300);
+  r.on_team_message("a", "team/map", 200);
+  r.on_team_message("b", "team/plan", 50);
+  r.on_team_message("zz", "team/plan", 50);  // unknown robot: not counted
+  EXPECT_EQ(r.record().team_bytes.at("a").at("incremental_map"), 500u);
+  EXPECT_EQ(r.record().team_bytes.at("b").at("exploration_route"), 50u);
+  EXPECT_FALSE(r.record().team_bytes.contains("zz"));
+  EXPECT_FALSE(r.on_pose("zz", 11.0, pose_at(0, 0, 0)));
+}
+
+TEST(TeamRecorder, PlanningTimeRecordedOncePerRound) {
+  const auto t = team();
+  TeamRecorder r(t);
+  r.start(0.0);
+  EXPECT_EQ(r.on_planning_status("a", planning_status(1, 0.05, 12)), 12);
+  r.on_planning_status("a", planning_status(1, 0.05, 12));  // same round repeated in the next status
+  r.on_planning_status("a", planning_status(2, 0.07, 3));
+  ASSERT_EQ(r.record().planning_times_s.at("a").size(), 2u);
+  EXPECT_DOUBLE_EQ(r.record().planning_times_s.at("a")[1], 0.07);
+  v1::ServiceStatus empty;
+  EXPECT_EQ(r.on_planning_status("b", empty), -1);
+}
+
+}  // namespace
+}  // namespace hexplore::station
