@@ -47,20 +47,27 @@ struct RunResult {
   std::vector<ResolverCounters> counters;
 };
 
-RunResult run(std::vector<Robot>& robots, double time_limit_s, double dt = 0.1) {
+// Robots move every `dt`; they decide every `decide_every` steps on the fragments shared at the
+// previous decision (so what they hear is one decision period old, as over the network).
+RunResult run(std::vector<Robot>& robots, double time_limit_s, double dt = 0.1, int decide_every = 1) {
   RunResult result;
   std::ostringstream trace;
   trace.precision(17);
   double t = 0.0;
-  for (; t < time_limit_s; t += dt) {
-    std::vector<Fragment> shared;
-    for (auto& r : robots) shared.push_back(r.resolver->fragment(r.position));
-    for (auto& r : robots) {
-      r.command = r.resolver->decide(r.position, r.plan, r.speed, shared, t);
+  std::vector<Fragment> shared;
+  for (auto& r : robots) shared.push_back(r.resolver->fragment(r.position));
+  for (int step = 0; t < time_limit_s; ++step, t += dt) {
+    if (step % decide_every == 0) {
+      for (auto& r : robots) r.command = r.resolver->decide(r.position, r.plan, r.speed, shared, t);
+      shared.clear();
+      for (auto& r : robots) shared.push_back(r.resolver->fragment(r.position));
     }
     bool all = true;
     for (auto& r : robots) {
-      if (r.command.kind == DecisionKind::kFollow) r.position = move_along(r.command.waypoints, r.speed * dt);
+      if (r.command.kind == DecisionKind::kFollow) {
+        r.position = move_along(r.command.waypoints, r.speed * dt);
+        r.command.waypoints = remaining_path(r.position, r.command.waypoints);
+      }
       if (!r.plan.empty() && r.arrived_at < 0 && distance_xy(r.position, r.plan.back()) < 0.06) r.arrived_at = t;
       if (!r.plan.empty() && r.arrived_at < 0) all = false;
       trace << r.position.x() << ',' << r.position.y() << ';';
@@ -82,6 +89,7 @@ RunResult run(std::vector<Robot>& robots, double time_limit_s, double dt = 0.1) 
     }
   }
   result.end_time = t;
+  if (std::getenv("SAFETY_SUMMARY")) std::printf("min gap %.3f m, end %.1f s\n", result.min_gap, t);
   result.trace = trace.str();
   for (auto& r : robots) result.counters.push_back(r.resolver->counters());
   return result;
@@ -189,6 +197,20 @@ TEST(TeamMotion, StoppedRobotIsDrivenAround) {
   EXPECT_GT(result.min_gap, 0.0);
   EXPECT_GE(result.counters[0].detours, 1u);
   EXPECT_EQ(result.counters[0].yields, 0u);
+}
+
+TEST(TeamMotion, StaleFragmentsAndSlowerDecisionsStaySafe) {
+  // Decisions every 0.3 s on fragments 0.3 s old, robots moving every 0.05 s.
+  SafetyOptions options;
+  options.cycle_s = 0.3;
+  std::vector<Robot> robots;
+  robots.push_back(make_robot("a", kSlugcat, 0.4, {V(-6, 0, 0), V(7, 0, 0)}));
+  robots.push_back(make_robot("b", kMr1000, 0.5, {V(6, 0.2, 0), V(-7, 0.2, 0)}));
+  robots.push_back(make_robot("c", kSlugcat, 0.4, {V(0.5, -6, 0), V(0.5, 7, 0)}));
+  for (auto& r : robots) r.resolver = std::make_unique<ConflictResolver>(r.id, r.half, options);
+  const auto result = run(robots, bound_for(robots) + 20.0, 0.05, 6);
+  EXPECT_TRUE(result.all_arrived) << "stuck at t=" << result.end_time;
+  EXPECT_GT(result.min_gap, 0.0);
 }
 
 TEST(TeamMotion, RunsAreDeterministic) {
