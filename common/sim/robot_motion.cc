@@ -1,0 +1,148 @@
+#include "common/sim/robot_motion.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "common/sim/scene_error.h"
+
+namespace hexplore::sim {
+namespace {
+
+constexpr double kMaxSubstepM = 0.05;   // small enough that a climbable slope never reads as a step
+constexpr double kWaypointReachedM = 1e-3;
+
+double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+
+}  // namespace
+
+const char* to_string(MotionState s) {
+  switch (s) {
+    case MotionState::kIdle: return "idle";
+    case MotionState::kMoving: return "moving";
+    case MotionState::kStopped: return "stopped";
+    case MotionState::kBlocked: return "blocked";
+    case MotionState::kEmergencyStop: return "emergency stop";
+  }
+  return "unknown";
+}
+
+RobotMotion::RobotMotion(const RayCaster& caster, const core::SpeciesConfig& species, const Eigen::Vector3d& start,
+                         double yaw_rad, uint32_t id)
+    : probe_(caster, species), id_(id) {
+  auto where = [&] {
+    std::ostringstream s;
+    s << species.name << " start (" << start.x() << ", " << start.y() << ", " << start.z() << ")";
+    return s.str();
+  };
+  const auto f = probe_.footprint(start.head<2>(), yaw_rad, start.z());
+  if (!f) throw SceneError(where(), "no ground under the robot's footprint");
+  const TerrainVerdict v = probe_.check(*f, nullptr);
+  if (v == TerrainVerdict::kSlope || v == TerrainVerdict::kClearance)
+    throw SceneError(where(), std::string("the robot cannot stand there: ") + to_string(v));
+  footprint_ = *f;
+}
+
+Eigen::Vector3d RobotMotion::ground_position() const {
+  return {footprint_.xy.x(), footprint_.xy.y(), footprint_.ground_z};
+}
+
+ProxyBox RobotMotion::body_box() const {
+  const Eigen::Isometry3d p = body_pose();
+  ProxyBox b;
+  b.id = id_;
+  b.center = p.translation();
+  b.orientation = Eigen::Quaterniond(p.linear());
+  b.half_extents = species().body_half_extents_m;
+  return b;
+}
+
+void RobotMotion::follow(std::vector<Eigen::Vector3d> waypoints, double speed_mps) {
+  if (state_ == MotionState::kEmergencyStop) return;
+  path_ = std::move(waypoints);
+  next_ = 0;
+  speed_mps_ = speed_mps > 0 ? std::min(speed_mps, species().speed_mps) : species().speed_mps;
+  block_reason_ = TerrainVerdict::kOk;
+  state_ = path_.empty() ? MotionState::kIdle : MotionState::kMoving;
+}
+
+void RobotMotion::stop() {
+  if (state_ == MotionState::kEmergencyStop) return;
+  path_.clear();
+  next_ = 0;
+  state_ = MotionState::kStopped;
+}
+
+void RobotMotion::emergency_stop() {
+  path_.clear();
+  next_ = 0;
+  state_ = MotionState::kEmergencyStop;
+}
+
+void RobotMotion::release() {
+  if (state_ == MotionState::kEmergencyStop) state_ = MotionState::kIdle;
+}
+
+void RobotMotion::block(TerrainVerdict why) {
+  block_reason_ = why;
+  state_ = MotionState::kBlocked;
+  path_.clear();
+  next_ = 0;
+}
+
+void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
+  const Eigen::Vector3d before = body_pose().translation();
+  double budget = state_ == MotionState::kMoving ? speed_mps_ * dt_s : 0.0;
+  while (state_ == MotionState::kMoving && budget > 1e-9) {
+    if (next_ >= path_.size()) {
+      state_ = MotionState::kIdle;
+      break;
+    }
+    const Eigen::Vector2d delta = path_[next_].head<2>() - footprint_.xy;
+    const double dist = delta.norm();
+    if (dist < kWaypointReachedM) {
+      ++next_;
+      continue;
+    }
+    const double yaw = std::atan2(delta.y(), delta.x());
+    if (std::abs(wrap(yaw - footprint_.yaw)) > 1e-6) {
+      // Turn in place: the turned body must fit (slope, clearance), not step anywhere.
+      const auto turned = probe_.footprint(footprint_.xy, yaw, footprint_.ground_z);
+      if (!turned) return block(TerrainVerdict::kNoGround);
+      const TerrainVerdict v = probe_.check(*turned, nullptr);
+      if (v == TerrainVerdict::kSlope || v == TerrainVerdict::kClearance) return block(v);
+      footprint_ = *turned;
+    }
+    const double move = std::min({budget, dist, kMaxSubstepM});
+    const Eigen::Vector2d xy = footprint_.xy + move * delta / dist;
+    const auto next = probe_.footprint(xy, yaw, footprint_.heights);
+    if (!next) return block(TerrainVerdict::kNoGround);
+    const TerrainVerdict v = probe_.check(*next, &footprint_);
+    if (v != TerrainVerdict::kOk) return block(v);
+    const Eigen::Vector3d a = ground_position();
+    footprint_ = *next;
+    odometry_m_ += (ground_position() - a).norm();
+    budget -= move;
+  }
+  if (state_ == MotionState::kMoving && next_ < path_.size() &&
+      (path_[next_].head<2>() - footprint_.xy).norm() < kWaypointReachedM)
+    ++next_;
+  if (state_ == MotionState::kMoving && next_ >= path_.size()) state_ = MotionState::kIdle;
+  velocity_ = dt_s > 0 ? Eigen::Vector3d((body_pose().translation() - before) / dt_s) : Eigen::Vector3d::Zero();
+
+  // Contacts: a collision is counted when a teammate's body starts touching ours.
+  const ProxyBox mine = body_box();
+  std::set<uint32_t> now;
+  for (const auto& other : teammates)
+    if (other.id != id_ && boxes_overlap(mine, other)) now.insert(other.id);
+  for (auto id : now)
+    if (!touching_.count(id)) ++collisions_;
+  touching_ = std::move(now);
+}
+
+double trajectory_length(std::span<const Eigen::Vector3d> points) {
+  double sum = 0.0;
+  for (size_t i = 1; i < points.size(); ++i) sum += (points[i] - points[i - 1]).norm();
+  return sum;
+}
+
+}  // namespace hexplore::sim
