@@ -1,0 +1,318 @@
+#include "common/perception/perception_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hexplore::perception {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+}  // namespace
+
+PerceptionMap::PerceptionMap(MapParams params)
+    : params_((params.validate(), std::move(params))), window_(TerrainWindow::from(params_)), tree_(params_.resolution_m) {}
+
+Eigen::Vector3d PerceptionMap::centre_of(const octomap::OcTreeKey& key) const {
+  const double r = params_.resolution_m;
+  return {(static_cast<int>(key[0]) - kOctreeKeyOffset + 0.5) * r, (static_cast<int>(key[1]) - kOctreeKeyOffset + 0.5) * r,
+          (static_cast<int>(key[2]) - kOctreeKeyOffset + 0.5) * r};
+}
+
+Eigen::Vector3d PerceptionMap::centre_of(const VoxelKey& key) const {
+  const double r = params_.resolution_m;
+  return {(key.ix + 0.5) * r, (key.iy + 0.5) * r, (key.iz + 0.5) * r};
+}
+
+VoxelKey PerceptionMap::key_of(const Eigen::Vector3d& p) const {
+  const double r = params_.resolution_m;
+  return {static_cast<int32_t>(std::floor(p.x() / r)), static_cast<int32_t>(std::floor(p.y() / r)),
+          static_cast<int32_t>(std::floor(p.z() / r))};
+}
+
+IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vector<OrientedBox>& teammates) {
+  if (!scan.sensor_origin.allFinite()) {
+    throw std::invalid_argument("PerceptionMap::integrate: sensor origin is not finite");
+  }
+  if (scan.count > 0 && scan.xyz == nullptr) {
+    throw std::invalid_argument("PerceptionMap::integrate: " + std::to_string(scan.count) +
+                                " points announced but no point buffer given");
+  }
+  IntegrationStats stats;
+  stats.points_in = scan.count;
+  const BodyFilter bodies(teammates, params_.teammate_box_margin_m);
+  const double res = params_.resolution_m;
+  const double inv_res = 1.0 / res;
+  const double max_range_sq = scan.max_range_m > 0.0 ? std::pow(scan.max_range_m * (1.0 + 1e-6) + 1e-6, 2) : 0.0;
+
+  // 1. Group the points by voxel, accumulating moments relative to the voxel centre in double.
+  groups_.clear(scan.count / 4 + 16);
+  accumulators_.clear();
+  uint64_t last_packed = FlatKeyMap<uint32_t>::kEmpty;
+  uint32_t last_index = 0;
+  for (size_t i = 0; i < scan.count; ++i) {
+    const Eigen::Vector3d p(scan.xyz[3 * i], scan.xyz[3 * i + 1], scan.xyz[3 * i + 2]);
+    if (!p.allFinite()) {
+      ++stats.dropped_non_finite;
+      continue;
+    }
+    if (max_range_sq > 0.0 && (p - scan.sensor_origin).squaredNorm() > max_range_sq) {
+      ++stats.dropped_out_of_range;
+      continue;
+    }
+    if (!bodies.empty() && bodies.contains(p)) {
+      ++stats.dropped_teammate;
+      continue;
+    }
+    int32_t cell[3];
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) {
+      const double c = std::floor(p[a] * inv_res) + kOctreeKeyOffset;
+      inside = inside && c >= 0.0 && c < 65535.0;
+      cell[a] = static_cast<int32_t>(c);
+    }
+    if (!inside) {
+      ++stats.dropped_outside_map;
+      continue;
+    }
+    const octomap::OcTreeKey key(static_cast<octomap::key_type>(cell[0]), static_cast<octomap::key_type>(cell[1]),
+                                 static_cast<octomap::key_type>(cell[2]));
+    const uint64_t packed = pack_key(key);
+    if (packed != last_packed) {
+      bool inserted = false;
+      uint32_t& index = groups_.find_or_insert(packed, 0, inserted);
+      if (inserted) {
+        index = static_cast<uint32_t>(accumulators_.size());
+        accumulators_.push_back(Accumulator{key});
+      }
+      last_packed = packed;
+      last_index = index;
+    }
+    Accumulator& acc = accumulators_[last_index];
+    const Eigen::Vector3d o = p - centre_of(key);
+    ++acc.n;
+    acc.s[0] += o.x();
+    acc.s[1] += o.y();
+    acc.s[2] += o.z();
+    acc.q[0] += o.x() * o.x();
+    acc.q[1] += o.x() * o.y();
+    acc.q[2] += o.x() * o.z();
+    acc.q[3] += o.y() * o.y();
+    acc.q[4] += o.y() * o.z();
+    acc.q[5] += o.z() * o.z();
+    ++stats.points_integrated;
+  }
+
+  // 2. Fold each voxel's scan moments into its Gaussian, creating new leaves.
+  touched_.clear();
+  for (const Accumulator& acc : accumulators_) {
+    bool created = false;
+    VoxelNode* node = tree_.find_or_create(acc.key, created);
+    if (created) {
+      ++voxel_count_;
+      ++stats.voxels_created;
+    }
+    VoxelData& d = node->data();
+    d.count += acc.n;
+    for (int a = 0; a < 3; ++a) d.sum[a] += static_cast<float>(acc.s[a]);
+    for (int a = 0; a < 6; ++a) d.sum_sq[a] += static_cast<float>(acc.q[a]);
+    touched_.push_back({acc.key, node, acc.n});
+  }
+  stats.voxels_touched = touched_.size();
+  if (touched_.empty()) return stats;
+
+  // 3. Normals and sparsity of the touched voxels and their 26-neighbours.
+  memo_.clear(touched_.size() * 16);
+  NeighbourLookup lookup(tree_, memo_);
+  geometry_set_.clear();
+  for (const Touched& t : touched_) {
+    t.node->data().flags |= kFlagScratchGeometry;
+    geometry_set_.push_back({t.key, t.node});
+  }
+  for (const Touched& t : touched_) {
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const octomap::OcTreeKey k = NeighbourLookup::offset(t.key, dx, dy, dz);
+          VoxelNode* n = lookup.at(k);
+          if (n == nullptr || (n->data().flags & kFlagScratchGeometry) != 0) continue;
+          n->data().flags |= kFlagScratchGeometry;
+          geometry_set_.push_back({k, n});
+        }
+      }
+    }
+  }
+  for (size_t i = 0; i < geometry_set_.size(); ++i) {
+    const Pending& g = geometry_set_[i];
+    update_geometry(g.key, g.node->data(), lookup, centre_of(g.key), scan.sensor_origin, i < touched_.size(), params_);
+  }
+
+  // 4. Observation metrics of the voxels this scan saw, with their updated normals.
+  for (const Touched& t : touched_) update_observation(t.node->data(), centre_of(t.key), scan.sensor_origin, t.points);
+
+  // 5. Flags and risk masks of every voxel whose terrain sample may have changed: the geometry
+  //    set, the columns around touched voxels (step) and the cells below them (clearance).
+  risk_set_.clear();
+  for (const Pending& g : geometry_set_) {
+    g.node->data().flags |= kFlagScratchRisk;
+    risk_set_.push_back(g);
+  }
+  auto add_risk = [&](const octomap::OcTreeKey& k) {
+    VoxelNode* n = lookup.at(k);
+    if (n == nullptr || (n->data().flags & kFlagScratchRisk) != 0) return;
+    n->data().flags |= kFlagScratchRisk;
+    risk_set_.push_back({k, n});
+  };
+  for (const Touched& t : touched_) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        for (int dz = -window_.step_cells; dz <= window_.step_cells; ++dz) {
+          if (dx == 0 && dy == 0) continue;
+          add_risk(NeighbourLookup::offset(t.key, dx, dy, dz));
+        }
+      }
+    }
+    for (int dz = -window_.clearance_cells; dz < 0; ++dz) add_risk(NeighbourLookup::offset(t.key, 0, 0, dz));
+  }
+  for (const Pending& r : risk_set_) refresh_state(r.key, r.node->data(), lookup);
+  for (const Pending& r : risk_set_) {
+    r.node->data().flags &= static_cast<uint8_t>(~(kFlagScratchGeometry | kFlagScratchRisk));
+  }
+  stats.voxels_recomputed = risk_set_.size();
+  return stats;
+}
+
+void PerceptionMap::update_observation(VoxelData& d, const Eigen::Vector3d& centre, const Eigen::Vector3d& sensor,
+                                       uint32_t points) const {
+  if (!d.has_normal()) return;
+  const Eigen::Vector3d view = sensor - voxel_mean(d, centre);
+  const double distance = view.norm();
+  if (distance < 1e-6) return;
+  float n[3];
+  d.normal(n);
+  const double cosine = std::abs(view.dot(Eigen::Vector3d(n[0], n[1], n[2]))) / distance;
+  const double angle_deg = std::acos(std::clamp(cosine, 0.0, 1.0)) * kRadToDeg;
+  // Only observations inside both thresholds count (paper: gamma(v), l(v) are minima among them).
+  if (angle_deg >= params_.gamma_th_deg || distance >= params_.l_th_m) return;
+  d.obs_points = static_cast<uint16_t>(std::min<uint32_t>(0xFFFF, d.obs_points + points));
+  d.obs_angle_cdeg = std::min<uint16_t>(d.obs_angle_cdeg, static_cast<uint16_t>(std::lround(angle_deg * 100.0)));
+  d.obs_distance_cm =
+      std::min<uint16_t>(d.obs_distance_cm, static_cast<uint16_t>(std::min<long>(0xFFFE, std::lround(distance * 100.0))));
+}
+
+void PerceptionMap::refresh_state(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLookup& lookup) {
+  const Eigen::Vector3d centre = centre_of(key);
+  float n[3];
+  d.normal(n);
+  const bool ground = d.has_normal() && slope_deg(n) < params_.s_th_deg;
+  uint32_t mask = 0;
+  if (ground) mask = low_risk_mask(sample_terrain(key, d, lookup, centre, window_, params_), params_);
+  const double density = d.obs_points * params_.density_per_point();
+  const bool covered = d.has_observation() && density > params_.rho_th &&
+                       d.obs_angle_cdeg / 100.0 < params_.gamma_th_deg && d.obs_distance_cm / 100.0 < params_.l_th_m;
+  const uint8_t flags = static_cast<uint8_t>((ground ? kFlagGround : 0) | (covered ? kFlagCovered : 0) |
+                                             (mask != 0 ? kFlagTraversable : 0));
+  const bool changed = (d.flags & kPublishedFlagsMask) != flags || d.low_risk_mask != mask ||
+                       (d.flags & kFlagWasPublished) == 0 || published_state_moved(d, centre);
+  d.flags = static_cast<uint8_t>((d.flags & ~kPublishedFlagsMask) | flags);
+  d.low_risk_mask = mask;
+  if (changed && (d.flags & kFlagChangePending) == 0) {
+    d.flags |= kFlagChangePending;
+    changed_.push_back(pack_key(key));
+  }
+}
+
+bool PerceptionMap::published_state_moved(const VoxelData& d, const Eigen::Vector3d& centre) const {
+  const double step = params_.resolution_m / 254.0;
+  const Eigen::Vector3d published_mean(d.pub_mean_q[0] * step, d.pub_mean_q[1] * step, d.pub_mean_q[2] * step);
+  const Eigen::Vector3d mean = voxel_mean(d, centre) - centre;
+  if ((mean - published_mean).norm() > params_.mean_tolerance_m) return true;
+  float n[3];
+  d.normal(n);
+  const Eigen::Vector3d normal(n[0], n[1], n[2]);
+  const Eigen::Vector3d published_normal(d.pub_normal_q[0] / 127.0, d.pub_normal_q[1] / 127.0, d.pub_normal_q[2] / 127.0);
+  if (normal.isZero() != published_normal.isZero()) return true;
+  if (normal.isZero()) return false;
+  const double cosine = normal.dot(published_normal) / (normal.norm() * published_normal.norm());
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) * kRadToDeg > params_.normal_tolerance_deg;
+}
+
+VoxelView PerceptionMap::view_of(const octomap::OcTreeKey& key, const VoxelData& d) const {
+  VoxelView v;
+  v.key = to_voxel_key(key);
+  v.point_count = d.count;
+  const Eigen::Vector3d centre = centre_of(key);
+  v.mean = voxel_mean(d, centre).cast<float>();
+  if (d.count > 0) {
+    const double inv = 1.0 / d.count;
+    const Eigen::Vector3d m(d.sum[0] * inv, d.sum[1] * inv, d.sum[2] * inv);
+    Eigen::Matrix3d q;
+    q << d.sum_sq[0], d.sum_sq[1], d.sum_sq[2], d.sum_sq[1], d.sum_sq[3], d.sum_sq[4], d.sum_sq[2], d.sum_sq[4],
+        d.sum_sq[5];
+    v.covariance = (q * inv - m * m.transpose()).cast<float>();
+  }
+  float n[3];
+  d.normal(n);
+  if (d.has_normal()) {
+    v.normal = Eigen::Vector3f(n[0], n[1], n[2]).normalized();
+    v.slope_deg = slope_deg(n);
+  }
+  v.sparsity = d.empty_neighbours / 26.0;
+  v.observed = d.has_observation();
+  if (v.observed) {
+    v.observation_angle_deg = d.obs_angle_cdeg / 100.0;
+    v.observation_distance_m = d.obs_distance_cm / 100.0;
+  }
+  v.observation_density = d.obs_points * params_.density_per_point();
+  v.flags = d.flags & kPublishedFlagsMask;
+  v.low_risk_species_mask = d.low_risk_mask;
+  return v;
+}
+
+std::optional<VoxelView> PerceptionMap::find(const VoxelKey& key) const {
+  octomap::OcTreeKey k;
+  if (!to_octree_key(key, k)) return std::nullopt;
+  const VoxelNode* node = tree_.search(k);
+  if (node == nullptr || node->data().count == 0) return std::nullopt;
+  return view_of(k, node->data());
+}
+
+std::vector<VoxelView> PerceptionMap::voxels() const {
+  std::vector<VoxelView> out;
+  out.reserve(voxel_count_);
+  for (auto it = tree_.begin_leafs(), end = tree_.end_leafs(); it != end; ++it) {
+    if (it.getDepth() != tree_.getTreeDepth() || it->data().count == 0) continue;
+    out.push_back(view_of(it.getKey(), it->data()));
+  }
+  return out;
+}
+
+std::vector<VoxelView> PerceptionMap::take_changes() {
+  std::vector<VoxelView> out;
+  out.reserve(changed_.size());
+  const double step = params_.resolution_m / 254.0;
+  for (uint64_t packed : changed_) {
+    const octomap::OcTreeKey key(static_cast<octomap::key_type>(packed & 0xFFFF),
+                                 static_cast<octomap::key_type>((packed >> 16) & 0xFFFF),
+                                 static_cast<octomap::key_type>((packed >> 32) & 0xFFFF));
+    VoxelNode* node = tree_.search(key);
+    if (node == nullptr) continue;
+    VoxelData& d = node->data();
+    out.push_back(view_of(key, d));
+    const Eigen::Vector3d centre = centre_of(key);
+    const Eigen::Vector3d offset = voxel_mean(d, centre) - centre;
+    for (int a = 0; a < 3; ++a) {
+      d.pub_mean_q[a] = static_cast<int8_t>(std::clamp<long>(std::lround(offset[a] / step), -127, 127));
+      d.pub_normal_q[a] = static_cast<int8_t>(std::lround(d.normal_q[a] / 32767.0 * 127.0));
+    }
+    d.flags = static_cast<uint8_t>((d.flags & ~kFlagChangePending) | kFlagWasPublished);
+  }
+  changed_.clear();
+  return out;
+}
+
+size_t PerceptionMap::memory_bytes() const {
+  return tree_.memoryUsage() + changed_.capacity() * sizeof(uint64_t);
+}
+
+}  // namespace hexplore::perception

@@ -1,0 +1,191 @@
+#include "common/perception/terrain_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+namespace hexplore::perception {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+// Mean z in the world frame of voxel `d` whose centre height is `centre_z`.
+double mean_z(const VoxelData& d, double centre_z) { return centre_z + d.sum[2] / static_cast<double>(d.count); }
+
+}  // namespace
+
+TerrainWindow TerrainWindow::from(const MapParams& params) {
+  double max_step = 0.0;
+  double max_clearance = 0.0;
+  for (const SpeciesLimits& s : params.species) {
+    max_step = std::max(max_step, s.max_step_m);
+    max_clearance = std::max(max_clearance, s.min_clearance_m);
+  }
+  TerrainWindow w;
+  // One cell more than the largest tolerated step, so a step just above the limit is seen.
+  w.step_cells = static_cast<int>(std::ceil(max_step / params.resolution_m)) + 1;
+  w.clearance_cells = static_cast<int>(std::ceil(max_clearance / params.resolution_m)) + 1;
+  return w;
+}
+
+double slope_deg(const float normal[3]) {
+  return std::acos(std::clamp(static_cast<double>(normal[2]), -1.0, 1.0)) * kRadToDeg;
+}
+
+Eigen::Vector3d voxel_mean(const VoxelData& d, const Eigen::Vector3d& centre) {
+  if (d.count == 0) return centre;
+  const double inv = 1.0 / static_cast<double>(d.count);
+  return centre + Eigen::Vector3d(d.sum[0] * inv, d.sum[1] * inv, d.sum[2] * inv);
+}
+
+void update_geometry(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLookup& lookup,
+                     const Eigen::Vector3d& centre, const Eigen::Vector3d& sensor, bool orient_to_sensor,
+                     const MapParams& params) {
+  // Moments of the whole neighbourhood relative to this voxel's centre: each neighbour's
+  // moments are shifted by its centre offset o: S1' = S1 + n o, S2' = S2 + S1 o^T + o S1^T + n o o^T.
+  const double res = params.resolution_m;
+  double n = 0.0;
+  Eigen::Vector3d s1 = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d s2 = Eigen::Matrix3d::Zero();
+  int empty = 0;
+  for (int dz = -1; dz <= 1; ++dz) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const VoxelData* nd = nullptr;
+        if (dx == 0 && dy == 0 && dz == 0) {
+          nd = &d;
+        } else {
+          const VoxelNode* node = lookup.at(key, dx, dy, dz);
+          if (node == nullptr) {
+            ++empty;
+            continue;
+          }
+          nd = &node->data();
+        }
+        const double cnt = nd->count;
+        const Eigen::Vector3d a(nd->sum[0], nd->sum[1], nd->sum[2]);
+        Eigen::Matrix3d q;
+        q << nd->sum_sq[0], nd->sum_sq[1], nd->sum_sq[2], nd->sum_sq[1], nd->sum_sq[3], nd->sum_sq[4], nd->sum_sq[2],
+            nd->sum_sq[4], nd->sum_sq[5];
+        const Eigen::Vector3d o(dx * res, dy * res, dz * res);
+        n += cnt;
+        s1 += a + cnt * o;
+        s2 += q + a * o.transpose() + o * a.transpose() + cnt * o * o.transpose();
+      }
+    }
+  }
+  d.empty_neighbours = static_cast<uint8_t>(empty);
+  if (n < params.min_points_for_normal) return;
+
+  const Eigen::Vector3d mean = s1 / n;
+  const Eigen::Matrix3d cov = s2 / n - mean * mean.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  eig.computeDirect(cov);
+  // Points on a line (one far LiDAR ring) leave the normal undetermined within a plane.
+  const double line_limit = 0.01 * res * res;
+  if (eig.eigenvalues()(1) < line_limit) return;
+  Eigen::Vector3d normal = eig.eigenvectors().col(0).normalized();
+
+  if (orient_to_sensor || !d.has_normal()) {
+    if (normal.dot(sensor - (centre + mean)) < 0.0) normal = -normal;
+  } else {
+    float prev[3];
+    d.normal(prev);
+    if (normal.dot(Eigen::Vector3d(prev[0], prev[1], prev[2])) < 0.0) normal = -normal;
+  }
+  d.set_normal(normal.x(), normal.y(), normal.z());
+}
+
+TerrainSample sample_terrain(const octomap::OcTreeKey& key, const VoxelData& d, NeighbourLookup& lookup,
+                             const Eigen::Vector3d& centre, const TerrainWindow& window, const MapParams& params) {
+  TerrainSample t;
+  float normal[3];
+  d.normal(normal);
+  t.slope_deg = slope_deg(normal);
+  t.sparsity = d.empty_neighbours / 26.0;
+  const double res = params.resolution_m;
+  const double h = mean_z(d, centre.z());
+
+  // Surface height of each neighbouring column: the occupied cell nearest to this voxel's
+  // level, then up its contiguous run (a wall's run reaches the window top: a large step; an
+  // overhang above a floor is a separate run and does not count).
+  double heights[9];
+  double xs[9];
+  double ys[9];
+  int m = 0;
+  heights[m] = h;
+  xs[m] = 0.0;
+  ys[m] = 0.0;
+  ++m;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      if (dx == 0 && dy == 0) continue;
+      int found = 0;
+      bool any = false;
+      for (int r = 0; r <= window.step_cells && !any; ++r) {
+        if (lookup.at(key, dx, dy, r) != nullptr) {
+          found = r;
+          any = true;
+        } else if (r > 0 && lookup.at(key, dx, dy, -r) != nullptr) {
+          found = -r;
+          any = true;
+        }
+      }
+      if (!any) continue;  // unknown column: sparsity accounts for it
+      int top = found;
+      while (top < window.step_cells && lookup.at(key, dx, dy, top + 1) != nullptr) ++top;
+      const VoxelNode* node = lookup.at(key, dx, dy, top);
+      const double hz = mean_z(node->data(), centre.z() + top * res);
+      t.step_m = std::max(t.step_m, std::abs(hz - h));
+      heights[m] = hz;
+      xs[m] = dx * res;
+      ys[m] = dy * res;
+      ++m;
+    }
+  }
+  if (m >= 4) {
+    // Least-squares plane z = a + b x + c y through the column heights.
+    Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+    for (int i = 0; i < m; ++i) {
+      const Eigen::Vector3d row(1.0, xs[i], ys[i]);
+      ata += row * row.transpose();
+      atb += row * heights[i];
+    }
+    const Eigen::Vector3d coef = ata.ldlt().solve(atb);
+    double sq = 0.0;
+    for (int i = 0; i < m; ++i) {
+      const double r = heights[i] - (coef(0) + coef(1) * xs[i] + coef(2) * ys[i]);
+      sq += r * r;
+    }
+    t.roughness_m = std::sqrt(sq / m);
+  }
+
+  // Overhead obstacles: the first voxel above that is not this surface's own continuation
+  // (a ramp splits over two cells of one column with means less than half a cell apart).
+  for (int dz = 1; dz <= window.clearance_cells; ++dz) {
+    const VoxelNode* node = lookup.at(key, 0, 0, dz);
+    if (node == nullptr) continue;
+    const double gap = mean_z(node->data(), centre.z() + dz * res) - h;
+    if (gap > 0.5 * res) {
+      t.clearance_m = gap;
+      break;
+    }
+  }
+  return t;
+}
+
+uint32_t low_risk_mask(const TerrainSample& t, const MapParams& params) {
+  uint32_t mask = 0;
+  for (size_t k = 0; k < params.species.size(); ++k) {
+    const SpeciesLimits& s = params.species[k];
+    const bool low_risk = t.slope_deg <= s.max_slope_deg && t.sparsity <= s.max_sparsity &&
+                          t.step_m <= s.max_step_m && t.roughness_m <= s.max_roughness_m &&
+                          t.clearance_m >= s.min_clearance_m;
+    if (low_risk) mask |= uint32_t{1} << k;
+  }
+  return mask;
+}
+
+}  // namespace hexplore::perception

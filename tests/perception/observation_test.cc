@@ -1,0 +1,95 @@
+// Observation metrics and coverage Q(v) (eq. 2): ISE until a close, frontal, dense observation.
+
+#include <gtest/gtest.h>
+
+#include "tests/perception/synthetic_scene.h"
+
+namespace hexplore::perception {
+namespace {
+
+using testing::add_patch;
+using testing::scan_of;
+using testing::two_species_params;
+
+// A 3 m x 2 m wall in the plane y = 0, facing +y.
+std::vector<float> wall(double spacing) {
+  std::vector<float> pts;
+  add_patch(pts, {0, 0, 0}, {3, 0, 0}, {0, 0, 2}, spacing);
+  return pts;
+}
+
+bool interior(const VoxelView& v) {
+  return v.mean.x() > 0.3 && v.mean.x() < 2.7 && v.mean.z() > 0.3 && v.mean.z() < 1.7;
+}
+
+TEST(Observation, FarGrazingViewLeavesIseUntilCloseFrontalDenseView) {
+  PerceptionMap map(two_species_params());  // SLUGCAT: l_th = 10 m
+  const std::vector<float> sparse = wall(0.05);
+  map.integrate(scan_of(sparse, {-20, 1, 1}), {});  // 20 m away, ~87 deg from the normal
+  int checked = 0;
+  for (const VoxelView& v : map.voxels()) {
+    if (!interior(v)) continue;
+    ++checked;
+    EXPECT_FALSE(v.observed);
+    EXPECT_FALSE(v.covered());
+    EXPECT_EQ(partition(v), VoxelSet::kFacadeIncomplete);
+  }
+  EXPECT_GT(checked, 100);
+
+  const std::vector<float> dense = wall(0.01);
+  map.integrate(scan_of(dense, {1.5, 3, 1}), {});  // 3 m in front
+  checked = 0;
+  for (const VoxelView& v : map.voxels()) {
+    if (!interior(v)) continue;
+    ++checked;
+    EXPECT_TRUE(v.observed);
+    EXPECT_LT(v.observation_angle_deg, 45.0);
+    EXPECT_LT(v.observation_distance_m, 3.5);
+    EXPECT_GT(v.observation_density, 0.3);
+    EXPECT_TRUE(v.covered());
+    EXPECT_EQ(partition(v), VoxelSet::kFacadeCovered);
+  }
+  EXPECT_GT(checked, 100);
+}
+
+TEST(Observation, CloseFrontalButSparseStaysIse) {
+  PerceptionMap map(two_species_params());
+  const std::vector<float> sparse = wall(0.05);  // ~9 points per voxel: 0.04 points/cm^2
+  map.integrate(scan_of(sparse, {1.5, 3, 1}), {});
+  for (const VoxelView& v : map.voxels()) {
+    if (!interior(v)) continue;
+    EXPECT_TRUE(v.observed);
+    EXPECT_LT(v.observation_density, 0.3);
+    EXPECT_FALSE(v.covered());
+  }
+}
+
+TEST(Observation, DistanceThresholdIsTheOwnSpeciesRange) {
+  // 15 m frontal and dense: beyond SLUGCAT's 10 m, within MR1000's 27 m.
+  const std::vector<float> dense = wall(0.01);
+  PerceptionMap slugcat(two_species_params(core::builtin_slugcat()));
+  PerceptionMap mr1000(two_species_params(core::builtin_mr1000()));
+  slugcat.integrate(scan_of(dense, {1.5, 15, 1}), {});
+  mr1000.integrate(scan_of(dense, {1.5, 15, 1}), {});
+  for (const VoxelView& v : slugcat.voxels()) {
+    if (interior(v)) EXPECT_FALSE(v.covered());
+  }
+  for (const VoxelView& v : mr1000.voxels()) {
+    if (interior(v)) EXPECT_TRUE(v.covered());
+  }
+}
+
+TEST(Observation, OnlyObservationsInsideTheThresholdsSetTheMinima) {
+  PerceptionMap map(two_species_params());
+  const std::vector<float> dense = wall(0.01);
+  map.integrate(scan_of(dense, {1.5, 3, 1}), {});
+  const VoxelKey key = map.key_of({1.5, 0, 1.0});
+  const double angle = map.find(key)->observation_angle_deg;
+  // Closer but at a grazing angle: must not replace the distance.
+  map.integrate(scan_of(dense, {-1.0, 0.5, 1}), {});
+  EXPECT_NEAR(map.find(key)->observation_distance_m, 3.0, 0.05);
+  EXPECT_DOUBLE_EQ(map.find(key)->observation_angle_deg, angle);
+}
+
+}  // namespace
+}  // namespace hexplore::perception

@@ -1,0 +1,158 @@
+// Terrain metrics, traversal risk and the facade/ground partition on analytic geometry.
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "tests/perception/synthetic_scene.h"
+
+namespace hexplore::perception {
+namespace {
+
+using testing::add_floor;
+using testing::add_patch;
+using testing::kMr1000Bit;
+using testing::kSlugcatBit;
+using testing::scan_of;
+using testing::two_species_params;
+
+bool inside_xy(const VoxelView& v, double x0, double x1, double y0, double y1) {
+  return v.mean.x() > x0 && v.mean.x() < x1 && v.mean.y() > y0 && v.mean.y() < y1;
+}
+
+TEST(Terrain, FlatFloorIsGroundTraversableByEverySpecies) {
+  PerceptionMap map(two_species_params());
+  std::vector<float> pts;
+  add_floor(pts, -3, 3, -3, 3, 0.05, 0.02);
+  const IntegrationStats stats = map.integrate(scan_of(pts, {0, 0, 1}), {});
+  EXPECT_EQ(stats.points_integrated, pts.size() / 3);
+  int interior = 0;
+  for (const VoxelView& v : map.voxels()) {
+    if (!inside_xy(v, -2.7, 2.7, -2.7, 2.7)) continue;
+    ++interior;
+    EXPECT_TRUE(v.ground());
+    EXPECT_LT(v.slope_deg, 2.0);
+    EXPECT_GT(v.normal.z(), 0.99f) << "normal must point up, towards the sensor";
+    EXPECT_EQ(v.low_risk_species_mask, kSlugcatBit | kMr1000Bit);
+    EXPECT_TRUE(v.traversable());
+  }
+  EXPECT_GT(interior, 1000);
+}
+
+TEST(Terrain, TwentyDegreeRampIsTraversableByTheTrackedSpeciesOnly) {
+  PerceptionMap map(two_species_params());
+  std::vector<float> pts;
+  const double t = std::tan(20.0 * M_PI / 180.0);
+  add_patch(pts, {0, -2, 0.05}, {4, 0, 4 * t}, {0, 4, 0}, 0.015);
+  map.integrate(scan_of(pts, {2, 0, 3}), {});
+  int interior = 0;
+  for (const VoxelView& v : map.voxels()) {
+    if (!inside_xy(v, 0.5, 3.5, -1.5, 1.5)) continue;
+    ++interior;
+    EXPECT_TRUE(v.ground());
+    EXPECT_NEAR(v.slope_deg, 20.0, 2.0);
+    EXPECT_TRUE(v.low_risk_species_mask & kSlugcatBit) << "at " << v.mean.transpose();
+    EXPECT_FALSE(v.low_risk_species_mask & kMr1000Bit) << "at " << v.mean.transpose();
+  }
+  EXPECT_GT(interior, 300);
+}
+
+TEST(Terrain, VerticalWallIsFacade) {
+  PerceptionMap map(two_species_params());
+  std::vector<float> pts;
+  add_patch(pts, {2, -2, 0}, {0, 4, 0}, {0, 0, 2.5}, 0.02);
+  map.integrate(scan_of(pts, {0, 0, 1}), {});
+  int interior = 0;
+  for (const VoxelView& v : map.voxels()) {
+    if (v.mean.y() < -1.7 || v.mean.y() > 1.7 || v.mean.z() < 0.3 || v.mean.z() > 2.2) continue;
+    ++interior;
+    EXPECT_FALSE(v.ground());
+    EXPECT_NEAR(v.slope_deg, 90.0, 2.0);
+    EXPECT_LT(v.normal.x(), -0.99f) << "normal must face the sensor";
+    EXPECT_EQ(v.low_risk_species_mask, 0u);
+    EXPECT_EQ(partition(v), VoxelSet::kFacadeIncomplete);
+  }
+  EXPECT_GT(interior, 250);
+}
+
+// Lower floor at z = 0.05 for x < 0.07, upper floor at z = 0.20 beyond, riser between.
+std::vector<float> step_scene(double height) {
+  std::vector<float> pts;
+  add_floor(pts, -2, 0.07, -1.5, 1.5, 0.05, 0.015);
+  add_floor(pts, 0.07, 2, -1.5, 1.5, 0.05 + height, 0.015);
+  add_patch(pts, {0.07, -1.5, 0.05}, {0, 3, 0}, {0, 0, height}, 0.015);
+  return pts;
+}
+
+TEST(Terrain, FifteenCentimetreStepBlocksTheWheeledSpeciesButNotTheTrackedOne) {
+  PerceptionMap map(two_species_params());
+  const std::vector<float> pts = step_scene(0.15);
+  map.integrate(scan_of(pts, {-1, 0, 1}), {});
+  const VoxelKey low = map.key_of({-1.5, 0, 0.05});
+  const VoxelKey high = map.key_of({1.5, 0, 0.2});
+  EXPECT_TRUE(testing::reachable(map, low, high, kSlugcatBit));
+  EXPECT_FALSE(testing::reachable(map, low, high, kMr1000Bit));
+  // Away from the edge, both floors stay fine for the wheeled robot.
+  EXPECT_TRUE(map.find(low)->low_risk_species_mask & kMr1000Bit);
+  EXPECT_TRUE(map.find(high)->low_risk_species_mask & kMr1000Bit);
+}
+
+TEST(Terrain, LowStepIsTraversableByBoth) {
+  PerceptionMap map(two_species_params());
+  const std::vector<float> pts = step_scene(0.04);
+  map.integrate(scan_of(pts, {-1, 0, 1}), {});
+  const VoxelKey low = map.key_of({-1.5, 0, 0.05});
+  const VoxelKey high = map.key_of({1.5, 0, 0.09});
+  EXPECT_TRUE(testing::reachable(map, low, high, kSlugcatBit));
+  EXPECT_TRUE(testing::reachable(map, low, high, kMr1000Bit));
+}
+
+TEST(Terrain, HalfMetreOverhangBlocksWheeledClearanceOnly) {
+  PerceptionMap map(two_species_params());
+  std::vector<float> pts;
+  add_floor(pts, -2, 2, -2, 2, 0.05, 0.02);
+  add_floor(pts, -0.5, 0.5, -2, 2, 0.55, 0.02);  // slab underside, seen from below
+  map.integrate(scan_of(pts, {-1.5, 0, 0.35}), {});
+  int under = 0;
+  for (const VoxelView& v : map.voxels()) {
+    if (v.key.iz == 3) {
+      EXPECT_FALSE(v.ground()) << "an overhang seen from below faces down: facade";
+      EXPECT_LT(v.normal.z(), -0.99f);
+      continue;
+    }
+    if (!inside_xy(v, -0.35, 0.35, -1.7, 1.7)) continue;
+    ++under;
+    EXPECT_TRUE(v.ground());
+    EXPECT_TRUE(v.low_risk_species_mask & kSlugcatBit) << "0.5 m is above SLUGCAT's 0.45 m body";
+    EXPECT_FALSE(v.low_risk_species_mask & kMr1000Bit) << "0.5 m is below MR1000's 0.8 m body";
+  }
+  EXPECT_GT(under, 50);
+  const VoxelKey open = map.key_of({-1.5, 0, 0.05});
+  EXPECT_EQ(map.find(open)->low_risk_species_mask, kSlugcatBit | kMr1000Bit);
+}
+
+TEST(Terrain, FloorAtTheFootOfAWallIsNotTraversable) {
+  PerceptionMap map(two_species_params());
+  std::vector<float> pts;
+  add_floor(pts, -2, 2, -2, 2, 0.05, 0.02);
+  add_patch(pts, {1.0, -2, 0.05}, {0, 4, 0}, {0, 0, 2}, 0.02);
+  map.integrate(scan_of(pts, {0, 0, 1}), {});
+  const auto next_to_wall = map.find(map.key_of({0.8, 0, 0.05}));
+  ASSERT_TRUE(next_to_wall.has_value());
+  EXPECT_EQ(next_to_wall->low_risk_species_mask, 0u);
+  EXPECT_EQ(partition(*next_to_wall), VoxelSet::kUntraversableGround);
+  EXPECT_EQ(map.find(map.key_of({-1, 0, 0.05}))->low_risk_species_mask, kSlugcatBit | kMr1000Bit);
+}
+
+TEST(Terrain, ParamsRejectBadValues) {
+  MapParams p = two_species_params();
+  p.resolution_m = 0.0;
+  EXPECT_THROW(PerceptionMap{p}, std::invalid_argument);
+  p = two_species_params();
+  p.species.clear();
+  EXPECT_THROW(PerceptionMap{p}, std::invalid_argument);
+  EXPECT_DOUBLE_EQ(two_species_params(core::builtin_mr1000()).l_th_m, 27.0);
+}
+
+}  // namespace
+}  // namespace hexplore::perception
