@@ -19,7 +19,8 @@ class PrometheusRegistry : public Registry {
   HistogramFamily* histogram_family(const std::string& name, const std::string& help,
                                     const std::vector<double>& bucket_bounds) override;
 
-  // Starts serving http://<bind_address>:<port>/metrics. port 0 asks the OS for a free port;
+  // Starts serving http://<bind_address>:<port>/metrics (civetweb; stopping it on destruction
+  // takes up to 2 s, its poll quantum). port 0 asks the OS for a free port;
   // returns the port actually bound. Throws std::runtime_error naming the address on failure.
   // At most one exposer per registry.
   int expose(int port, const std::string& bind_address = "0.0.0.0");

@@ -132,6 +132,8 @@ Requester::Requester(Context& context, Identity identity, const std::string& con
       peer_(peer_robot_id.empty() ? "unknown" : std::move(peer_robot_id)) {
   options_.validate();
   detail::apply_options(socket_, options_);
+  // A request still queued at close can never be answered: do not let it hold up shutdown.
+  socket_.set(zmq::sockopt::linger, 0);
   detail::connect(socket_, connect_endpoint);
 }
 
