@@ -1,0 +1,21 @@
+// The EchoService as its own process, through run_service_main:
+//   echo_service --config TEAM.yaml --robot ID [--kind sim|mapping|...] [base flags]
+#include <cstring>
+#include <iostream>
+
+#include "tests/service/echo_service.h"
+
+int main(int argc, char** argv) {
+  using namespace hexplore;
+  core::ServiceKind kind = core::ServiceKind::kMapping;
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::strcmp(argv[i], "--kind") != 0) continue;
+    const auto parsed = core::service_from_name(argv[i + 1]);
+    if (!parsed) {
+      std::cerr << "error: --kind: unknown service '" << argv[i + 1] << "'\n";
+      return 2;
+    }
+    kind = *parsed;
+  }
+  return service::run_service_main(argc, argv, [kind] { return std::make_unique<testing::EchoService>(kind); });
+}
