@@ -71,8 +71,15 @@ std::optional<Footprint> TerrainProbe::footprint(const Eigen::Vector2d& xy, doub
 }
 
 TerrainVerdict TerrainProbe::check(const Footprint& to, const Footprint* from) const {
-  const double max_slope = species_.max_slope_deg * M_PI / 180.0;
-  if (std::abs(to.pitch) > max_slope || std::abs(to.roll) > max_slope) return TerrainVerdict::kSlope;
+  // Slope over the body's length and width. Nine samples alias on stairs (a sample on a
+  // nosing, the next on a tread), so half a step of height difference is tolerated: a
+  // tracked body bridges the nosings and feels the staircase's mean slope.
+  const double tan_slope = std::tan(species_.max_slope_deg * M_PI / 180.0);
+  const double length = 2 * kInset * species_.body_half_extents_m.x(), width = 2 * kInset * species_.body_half_extents_m.y();
+  const double tolerance = 0.5 * species_.max_step_m;
+  if (std::abs(std::tan(to.pitch)) * length > length * tan_slope + tolerance ||
+      std::abs(std::tan(to.roll)) * width > width * tan_slope + tolerance)
+    return TerrainVerdict::kSlope;
   if (from)
     for (int k = 0; k < 9; ++k)
       if (std::abs(to.heights[k] - from->heights[k]) > species_.max_step_m) return TerrainVerdict::kStep;

@@ -1,0 +1,169 @@
+#include "common/sim/robot_motion.h"
+
+#include <gtest/gtest.h>
+
+#include "common/sim/building.h"
+#include "common/sim/mesh_builder.h"
+#include "common/sim/rng.h"
+#include "common/sim/scene_error.h"
+#include "common/sim/scene_parts.h"
+#include "common/sim/scenes.h"
+
+namespace hexplore::sim {
+namespace {
+
+// Flat ground with, along +x: a staircase (0.175 m risers) at x in [5, ...), and further
+// along y = 10 a debris field (0.10-0.20 m cells) at x in [5, 9]; a wall at y = -5.
+TriangleMesh test_course() {
+  MeshBuilder b;
+  b.plane(-10, -10, 30, 20, 0.0);
+  b.stairs({5.0, 0.0, 0.0}, Heading::kPlusX, 1.6, 10, 0.175, 0.28);
+  b.box({7.8, -0.8, 0}, {12, 0.8, 1.75});  // landing at the top of the stairs
+  Rng rng(3);
+  detail::debris_field(b, rng, Rect{5, 9, 9, 11}, 0.5, 0.10, 0.20);
+  b.box({-10, -5.2, 0}, {30, -5.0, 2.5});
+  return b.take();
+}
+
+MotionState drive(RobotMotion& robot, std::vector<Eigen::Vector3d> path, double seconds) {
+  robot.follow(std::move(path));
+  for (double t = 0; t < seconds && robot.state() == MotionState::kMoving; t += 0.05) robot.step(0.05);
+  return robot.state();
+}
+
+TEST(RobotMotion, FollowsAPathAtItsSpeedOnFlatGround) {
+  const RayCaster caster(test_course());
+  const auto species = core::builtin_mr1000();
+  RobotMotion robot(caster, species, {0, 5, 0}, 0.0);
+  robot.follow({{2, 5, 0}, {2, 7, 0}});
+  robot.step(1.0);
+  EXPECT_EQ(robot.state(), MotionState::kMoving);
+  EXPECT_NEAR(robot.odometry_m(), species.speed_mps * 1.0, 1e-6);
+  EXPECT_NEAR(robot.velocity().norm(), species.speed_mps, 1e-6);
+  for (int i = 0; i < 200 && robot.state() == MotionState::kMoving; ++i) robot.step(0.1);
+  EXPECT_EQ(robot.state(), MotionState::kIdle);
+  EXPECT_NEAR(robot.odometry_m(), 4.0, 1e-6);
+  EXPECT_LT((robot.ground_position() - Eigen::Vector3d(2, 7, 0)).norm(), 1e-5);
+  // The body box rests on the ground.
+  EXPECT_NEAR(robot.body_pose().translation().z(), species.body_half_extents_m.z(), 1e-5);
+}
+
+TEST(RobotMotion, WheeledRobotCannotClimbStairsThatTrackedRobotClimbs) {
+  const RayCaster caster(test_course());
+  RobotMotion tracked(caster, core::builtin_slugcat(), {2, 0, 0}, 0.0);
+  EXPECT_EQ(drive(tracked, {{10, 0, 0}}, 60), MotionState::kIdle) << to_string(tracked.block_reason());
+  EXPECT_NEAR(tracked.ground_position().z(), 1.75, 1e-3);
+
+  RobotMotion wheeled(caster, core::builtin_mr1000(), {2, 0, 0}, 0.0);
+  EXPECT_EQ(drive(wheeled, {{10, 0, 0}}, 60), MotionState::kBlocked);
+  EXPECT_LT(wheeled.ground_position().x(), 5.0);
+  EXPECT_NEAR(wheeled.ground_position().z(), 0.0, 1e-6);
+}
+
+TEST(RobotMotion, WheeledRobotCannotCrossDebrisThatTrackedRobotCrosses) {
+  const RayCaster caster(test_course());
+  RobotMotion tracked(caster, core::builtin_slugcat(), {3, 10, 0}, 0.0);
+  EXPECT_EQ(drive(tracked, {{11, 10, 0}}, 60), MotionState::kIdle) << to_string(tracked.block_reason());
+  RobotMotion wheeled(caster, core::builtin_mr1000(), {3, 10, 0}, 0.0);
+  EXPECT_EQ(drive(wheeled, {{11, 10, 0}}, 60), MotionState::kBlocked);
+  EXPECT_EQ(wheeled.block_reason(), TerrainVerdict::kStep);
+}
+
+TEST(RobotMotion, WallsBlockEverySpecies) {
+  const RayCaster caster(test_course());
+  for (const auto& species : {core::builtin_slugcat(), core::builtin_mr1000()}) {
+    RobotMotion robot(caster, species, {0, -2, 0}, 0.0);
+    EXPECT_EQ(drive(robot, {{0, -8, 0}}, 30), MotionState::kBlocked) << species.name;
+    EXPECT_EQ(robot.block_reason(), TerrainVerdict::kObstacle);
+    EXPECT_GT(robot.ground_position().y(), -5.0 + species.body_half_extents_m.x() - 0.01);
+  }
+}
+
+TEST(RobotMotion, MultiFloorSupportIsTheNearestBelowNotTheTopmost) {
+  MeshBuilder b;
+  b.plane(-10, -10, 10, 10, 0.0);
+  b.box({-5, -5, 3.0}, {5, 5, 3.2});  // a slab 3 m up: the robot drives under it
+  const RayCaster caster(b.take());
+  RobotMotion robot(caster, core::builtin_slugcat(), {-8, 0, 0}, 0.0);
+  EXPECT_EQ(drive(robot, {{8, 0, 0}}, 60), MotionState::kIdle);
+  EXPECT_NEAR(robot.ground_position().z(), 0.0, 1e-6);
+  RobotMotion upstairs(caster, core::builtin_slugcat(), {0, 0, 3.2}, 0.0);  // placed on the slab
+  EXPECT_NEAR(upstairs.ground_position().z(), 3.2, 1e-6);
+  EXPECT_THROW(RobotMotion(caster, core::builtin_slugcat(), {50, 50, 0}, 0.0), SceneError);
+}
+
+TEST(RobotMotion, LowCeilingsBlockByClearance) {
+  MeshBuilder b;
+  b.plane(-10, -10, 10, 10, 0.0);
+  b.box({2, -3, 0.6}, {4, 3, 0.8});  // a table top 0.6 m up: under it fits SLUGCAT, not MR1000
+  const RayCaster caster(b.take());
+  RobotMotion tracked(caster, core::builtin_slugcat(), {0, 0, 0}, 0.0);
+  EXPECT_EQ(drive(tracked, {{6, 0, 0}}, 60), MotionState::kIdle) << to_string(tracked.block_reason());
+  RobotMotion wheeled(caster, core::builtin_mr1000(), {0, 0, 0}, 0.0);
+  EXPECT_EQ(drive(wheeled, {{6, 0, 0}}, 60), MotionState::kBlocked);
+}
+
+TEST(RobotMotion, StopsAndEmergencyStops) {
+  const RayCaster caster(test_course());
+  RobotMotion robot(caster, core::builtin_mr1000(), {0, 5, 0}, 0.0);
+  robot.follow({{3, 5, 0}});
+  robot.step(0.5);
+  robot.stop();
+  const double at = robot.odometry_m();
+  robot.step(1.0);
+  EXPECT_EQ(robot.state(), MotionState::kStopped);
+  EXPECT_EQ(robot.odometry_m(), at);
+  robot.emergency_stop();
+  robot.follow({{3, 5, 0}});  // ignored until released
+  robot.step(1.0);
+  EXPECT_EQ(robot.state(), MotionState::kEmergencyStop);
+  EXPECT_EQ(robot.odometry_m(), at);
+  robot.release();
+  robot.follow({{3, 5, 0}});
+  robot.step(1.0);
+  EXPECT_GT(robot.odometry_m(), at);
+}
+
+TEST(RobotMotion, ContactsWithTeammatesAreCountedOncePerContact) {
+  const RayCaster caster(test_course());
+  RobotMotion robot(caster, core::builtin_mr1000(), {0, 5, 0}, 0.0, /*id=*/1);
+  ProxyBox mate;
+  mate.id = 2;
+  mate.center = {2.0, 5.0, 0.4};
+  mate.half_extents = {0.5, 0.35, 0.4};
+  const std::vector<ProxyBox> mates = {mate};
+  robot.follow({{4, 5, 0}});
+  for (int i = 0; i < 100 && robot.state() == MotionState::kMoving; ++i) robot.step(0.1, mates);
+  EXPECT_EQ(robot.collisions(), 1u);  // drove through the proxy: one contact, not one per step
+}
+
+TEST(SimClock, AdvancesBySteps) {
+  SimClock clock(2.0);
+  clock.step(100'000'000);
+  clock.step(100'000'000);
+  EXPECT_EQ(clock.now_ns(), 200'000'000);
+  EXPECT_EQ(clock.wall_period_ns(100'000'000), 50'000'000);
+  EXPECT_EQ(SimClock(0.0).wall_period_ns(100'000'000), 0);
+}
+
+TEST(Trajectory, LengthOfAPolyline) {
+  const std::vector<Eigen::Vector3d> pts = {{0, 0, 0}, {3, 0, 0}, {3, 4, 0}};
+  EXPECT_DOUBLE_EQ(trajectory_length(pts), 7.0);
+}
+
+// In the single-building scene the annex door lies behind the debris yard: the tracked
+// robot gets from the yard gap to the annex door, the wheeled robot does not.
+TEST(RobotMotion, SingleBuildingDebrisYardNeedsTheTrackedRobot) {
+  const auto scene = generate_scene("single-building", 1);
+  const RayCaster caster(scene.mesh);
+  const std::vector<Eigen::Vector3d> path = {{29.25, 23.0, 0}, {29.25, 19.0, 0}, {27.2, 16.5, 0}, {27.2, 12.0, 0}};
+  RobotMotion tracked(caster, core::builtin_slugcat(), {29.25, 24.0, 0}, -M_PI / 2);
+  EXPECT_EQ(drive(tracked, path, 120), MotionState::kIdle) << to_string(tracked.block_reason()) << " at "
+                                                           << tracked.ground_position().transpose();
+  RobotMotion wheeled(caster, core::builtin_mr1000(), {29.25, 24.0, 0}, -M_PI / 2);
+  EXPECT_EQ(drive(wheeled, path, 120), MotionState::kBlocked);
+  EXPECT_GT(wheeled.ground_position().y(), 20.5);
+}
+
+}  // namespace
+}  // namespace hexplore::sim

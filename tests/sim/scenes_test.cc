@@ -1,0 +1,80 @@
+#include "common/sim/scenes.h"
+
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "common/sim/ray_caster.h"
+#include "common/sim/robot_motion.h"
+#include "common/sim/scene_error.h"
+
+namespace hexplore::sim {
+namespace {
+
+TEST(Scenes, GenerationIsDeterministicPerSeed) {
+  for (const auto& name : scene_names()) {
+    const auto a = generate_scene(name, 7), b = generate_scene(name, 7), c = generate_scene(name, 8);
+    EXPECT_EQ(a.mesh.content_hash(), b.mesh.content_hash()) << name;
+    EXPECT_NE(a.mesh.content_hash(), c.mesh.content_hash()) << name;
+    EXPECT_GT(a.mesh.triangle_count(), 1000u) << name;
+    EXPECT_LT(a.mesh.triangle_count(), 50000u) << name;  // moderate, so scans stay fast
+  }
+}
+
+TEST(Scenes, UnknownNameListsTheKnownOnes) {
+  try {
+    generate_scene("no-such-scene", 1);
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("single-building"), std::string::npos);
+  }
+  EXPECT_THROW(load_scene("/nonexistent/scene.ply", 1), SceneError);
+}
+
+TEST(Scenes, SizesMatchThePaper) {
+  const auto single = generate_scene("single-building", 1);
+  const auto b = single.mesh.bounds();
+  EXPECT_GE(b.max().z(), 12.0);  // tall main building
+  const auto multi_scene = generate_scene("multi-building", 1);
+  const Eigen::Vector3d multi = multi_scene.site.sizes();
+  EXPECT_NEAR(multi.x() * multi.y(), 1554.0, 30.0);
+}
+
+// Every suggested start (the default team's (2,-3) and (4,-3) among them) is flat, free
+// ground where both species can stand and drive a metre.
+TEST(Scenes, SuggestedStartsAreFreeFlatGround) {
+  for (const auto& name : scene_names()) {
+    const auto scene = generate_scene(name, 1);
+    const RayCaster caster(scene.mesh);
+    for (const auto& species : {core::builtin_slugcat(), core::builtin_mr1000()})
+      for (const auto& s : scene.suggested_starts) {
+        RobotMotion robot(caster, species, s, M_PI / 2);
+        EXPECT_NEAR(robot.ground_position().z(), 0.0, 1e-3) << name;
+        robot.follow({s + Eigen::Vector3d(0, 1.0, 0)});
+        for (int i = 0; i < 100 && robot.state() == MotionState::kMoving; ++i) robot.step(0.1);
+        EXPECT_EQ(robot.state(), MotionState::kIdle) << name << " " << species.name << " at " << s.transpose() << ": "
+                                                     << to_string(robot.block_reason());
+      }
+  }
+}
+
+// The OSRF collapsed town (third-party COLLADA-derived geometry): loads, and a robot of
+// each species is placed in a street and driven along it.
+TEST(Scenes, OsrfCollapsedTownLoadsAndRobotsDrive) {
+  const std::string path = std::string(HEXPLORE_SHARED_DIR) + "/scenes/collapsed_town_osrf/collapsed_town.ply";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared scene not found at " << path;
+  const auto scene = load_scene(path, 1);
+  EXPECT_EQ(scene.mesh.triangle_count(), 15036u);
+  const RayCaster caster(scene.mesh);
+  // The street between the four buildings (x = 0 separates west and east blocks).
+  for (const auto& species : {core::builtin_slugcat(), core::builtin_mr1000()}) {
+    RobotMotion robot(caster, species, {0.0, -25.0, 0.0}, M_PI / 2);
+    robot.follow({{0.0, -20.0, 0.0}, {0.0, -15.0, 0.0}});
+    for (int i = 0; i < 600 && robot.state() == MotionState::kMoving; ++i) robot.step(0.1);
+    EXPECT_EQ(robot.state(), MotionState::kIdle) << species.name << ": " << to_string(robot.block_reason());
+    EXPECT_NEAR(robot.odometry_m(), 10.0, 0.05) << species.name;
+  }
+}
+
+}  // namespace
+}  // namespace hexplore::sim
