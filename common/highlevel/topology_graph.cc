@@ -29,9 +29,9 @@ int TopologyGraph::index_of(uint64_t key) const {
 
 void TopologyGraph::changed() {
   ++version_;
-  std::lock_guard lock(cache_mutex_);
-  cache_.clear();
-  cache_bytes_ = 0;
+  std::lock_guard lock(cache_.mutex);
+  cache_.searches.clear();
+  cache_.bytes = 0;
 }
 
 void TopologyGraph::grid_insert(int index) {
@@ -188,9 +188,9 @@ std::vector<uint64_t> TopologyGraph::vertex_keys() const {
 std::shared_ptr<const TopologyGraph::Search> TopologyGraph::search(int source, int species) const {
   const uint64_t ck = cache_key(source, species);
   {
-    std::lock_guard lock(cache_mutex_);
-    auto it = cache_.find(ck);
-    if (it != cache_.end()) return it->second;
+    std::lock_guard lock(cache_.mutex);
+    auto it = cache_.searches.find(ck);
+    if (it != cache_.searches.end()) return it->second;
   }
   const int level = levels_[species];
   auto result = std::make_shared<Search>();
@@ -219,13 +219,13 @@ std::shared_ptr<const TopologyGraph::Search> TopologyGraph::search(int source, i
       }
     }
   }
-  std::lock_guard lock(cache_mutex_);
-  if (cache_.size() >= max_cached_sources_) {
-    cache_.clear();
-    cache_bytes_ = 0;
+  std::lock_guard lock(cache_.mutex);
+  if (cache_.searches.size() >= max_cached_sources_) {
+    cache_.searches.clear();
+    cache_.bytes = 0;
   }
-  auto [it, inserted] = cache_.emplace(ck, std::move(result));
-  if (inserted) cache_bytes_ += vertices_.size() * (sizeof(double) + sizeof(int));
+  auto [it, inserted] = cache_.searches.emplace(ck, std::move(result));
+  if (inserted) cache_.bytes += vertices_.size() * (sizeof(double) + sizeof(int));
   return it->second;
 }
 
@@ -309,13 +309,13 @@ std::optional<uint64_t> TopologyGraph::nearest_impl(const Eigen::Vector3d& p, in
 }
 
 size_t TopologyGraph::cache_bytes() const {
-  std::lock_guard lock(cache_mutex_);
-  return cache_bytes_;
+  std::lock_guard lock(cache_.mutex);
+  return cache_.bytes;
 }
 
 size_t TopologyGraph::cached_sources() const {
-  std::lock_guard lock(cache_mutex_);
-  return cache_.size();
+  std::lock_guard lock(cache_.mutex);
+  return cache_.searches.size();
 }
 
 }  // namespace hexplore::highlevel

@@ -98,9 +98,21 @@ class TopologyGraph {
   double grid_cell_m_ = 1.0;
   std::unordered_map<uint64_t, std::vector<int>> grid_;
 
-  mutable std::mutex cache_mutex_;
-  mutable std::unordered_map<uint64_t, std::shared_ptr<const Search>> cache_;  // (source, species)
-  mutable size_t cache_bytes_ = 0;
+  // Cached searches keyed by (source, species). Copies of a graph start with an empty cache.
+  struct Cache {
+    std::mutex mutex;
+    std::unordered_map<uint64_t, std::shared_ptr<const Search>> searches;
+    size_t bytes = 0;
+    Cache() = default;
+    Cache(const Cache&) {}
+    Cache& operator=(const Cache&) {
+      std::lock_guard lock(mutex);
+      searches.clear();
+      bytes = 0;
+      return *this;
+    }
+  };
+  mutable Cache cache_;
   size_t max_cached_sources_ = 4096;
 };
 
