@@ -17,6 +17,7 @@ Publisher::Publisher(Context& context, Identity identity, const std::string& bin
   options_.validate();
   detail::apply_options(socket_, options_);
   bind(bind_endpoint);
+  header_ = make_header(identity_, 0, "", 0);
 }
 
 Publisher::~Publisher() {
@@ -27,7 +28,7 @@ Publisher::~Publisher() {
 void Publisher::bind(const std::string& endpoint) { endpoints_.push_back(detail::bind(socket_, endpoint)); }
 
 uint64_t Publisher::last_sequence(std::string_view topic) const {
-  auto it = sequences_.find(std::string(topic));
+  auto it = sequences_.find(topic);
   return it == sequences_.end() ? 0 : it->second;
 }
 
@@ -47,7 +48,8 @@ bool Publisher::publish_message(std::string_view topic, std::string_view payload
                        ": above max_message_bytes " + std::to_string(options_.max_message_bytes));
     return false;
   }
-  auto [it, inserted] = sequences_.try_emplace(std::string(topic), 0);
+  auto it = sequences_.find(topic);
+  if (it == sequences_.end()) it = sequences_.emplace(std::string(topic), 0).first;
   const uint64_t sequence = ++it->second;
   const bool faulty = options_.faults.active() && options_.faults.applies_to(topic);
   if (faulty && options_.faults.drop_fraction > 0.0 &&
@@ -55,7 +57,11 @@ bool Publisher::publish_message(std::string_view topic, std::string_view payload
     if (accounting_) accounting_->record_dropped(topic, DropReason::kFaultInjected);
     return false;
   }
-  zmq::message_t header = to_frame(make_header(identity_, sequence, payload_type, sim_time_ns));
+  header_.set_sequence(sequence);
+  header_.set_send_time_ns(core::wall_time_ns());
+  header_.set_sim_time_ns(sim_time_ns);
+  if (header_.payload_type() != payload_type) header_.set_payload_type(std::string(payload_type));
+  zmq::message_t header = to_frame(header_);
   zmq::message_t payload(payload_size);
   if (payload_size > 0) message.SerializeWithCachedSizesToArray(static_cast<uint8_t*>(payload.data()));
   if (faulty && options_.faults.delay.count() > 0) {

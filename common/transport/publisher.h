@@ -71,12 +71,19 @@ class Publisher : public Pollable {
   };
   bool send_frames(std::string_view topic, zmq::message_t& header, zmq::message_t& payload);
 
+  // Lets the sequence map be searched with a string_view (no allocation per publish).
+  struct TopicHash {
+    using is_transparent = void;
+    size_t operator()(std::string_view s) const noexcept { return std::hash<std::string_view>{}(s); }
+  };
+
   Identity identity_;
   SocketOptions options_;
   Accounting* accounting_;
   zmq::socket_t socket_;
   std::vector<std::string> endpoints_;
-  std::unordered_map<std::string, uint64_t> sequences_;
+  std::unordered_map<std::string, uint64_t, TopicHash, std::equal_to<>> sequences_;
+  v1::Header header_;  // identity fields set once; per-message fields overwritten on each publish
   std::deque<Delayed> delayed_;
   std::mt19937_64 rng_;
 };
