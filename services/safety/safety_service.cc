@@ -1,0 +1,256 @@
+#include "services/safety/safety_service.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "common/core/clock.h"
+#include "common/core/config_error.h"
+#include "common/core/log.h"
+#include "common/transport/topics.h"
+#include "services/safety/fragment_proto.h"
+
+namespace hexplore::safety {
+namespace {
+
+namespace topics = transport::topics;
+
+Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+// A teammate heard only through its driver's pose (its safety service is silent): moving along
+// its velocity, or standing still.
+Fragment fragment_from_pose(const std::string& id, const v1::RobotPose& pose, double eta_p_m) {
+  Fragment f;
+  f.robot_id = id;
+  f.position_m = vec(pose.pose().position_m());
+  Eigen::Vector3d v = vec(pose.velocity_mps());
+  v.z() = 0.0;
+  const double speed = v.norm();
+  f.stationary = speed < 0.05;
+  if (!f.stationary) {
+    f.speed_mps = speed;
+    f.waypoints_m.push_back(f.position_m + v / speed * eta_p_m);
+  }
+  Eigen::Vector3d half = vec(pose.body_half_extents_m());
+  if (half.minCoeff() <= 0.0) half = Eigen::Vector3d(0.5, 0.5, 0.5);
+  body_box_any_yaw(f.position_m, half, f.box_min_m, f.box_max_m);
+  return f;
+}
+
+}  // namespace
+
+void SafetyService::setup(service::ServiceContext& context) {
+  context_ = &context;
+  robot_id_ = context.robot_id();
+  const core::SpeciesConfig* species = context.species();
+  if (species == nullptr) throw core::ConfigError(context.team().source_file, "robots." + robot_id_ + ".species",
+                                                  "safety: robot has no known species");
+  default_speed_mps_ = species->speed_mps;
+
+  SafetyOptions options;
+  options.eta_p_m = context.team().params.eta_p_m;
+  resolver_ = std::make_unique<ConflictResolver>(robot_id_, species->body_half_extents_m, options);
+
+  const auto& args = context.arguments();
+  if (auto it = args.find("wait-for-start"); it != args.end()) {
+    if (it->second == "true") {
+      mission_ = Mission::kStopped;
+      mission_reason_ = "waiting for mission start";
+    } else if (it->second != "false") {
+      throw std::invalid_argument("safety: --wait-for-start expects true or false, got '" + it->second + "'");
+    }
+  }
+
+  auto& m = context.metrics();
+  const metrics::Labels labels{{"robot", robot_id_}};
+  conflicts_ = m.counter_family("hexplore_safety_conflicts_total", "Path conflicts with teammates detected")->add(labels);
+  yields_ = m.counter_family("hexplore_safety_yields_total", "Times this robot yielded to a teammate")->add(labels);
+  detours_ = m.counter_family("hexplore_safety_detours_total", "Detours around stationary teammates begun")->add(labels);
+  deadlock_breaks_ =
+      m.counter_family("hexplore_safety_deadlock_breaks_total", "Yields ended by the mutual-wait or timeout rules")
+          ->add(labels);
+  emergency_stops_ =
+      m.counter_family("hexplore_safety_emergency_stops_total", "Emergency stops received from the station")->add(labels);
+  yielding_ = m.gauge_family("hexplore_safety_yielding", "1 while this robot waits for a teammate")->add(labels);
+
+  // Inputs: own driver (pose, team/pose) and planning (path); every teammate's driver and
+  // safety (team/pose, team/path); the station (team/mission).
+  context.connect(robot_id_, core::ServiceKind::kSim);
+  context.connect(robot_id_, core::ServiceKind::kPlanning);
+  for (const auto& robot : context.team().robots) {
+    if (robot.id == robot_id_) continue;
+    context.connect(robot.id, core::ServiceKind::kSim);
+    context.connect(robot.id, core::ServiceKind::kSafety);
+  }
+  context.connect(std::string(core::kStationId), core::ServiceKind::kStation);
+
+  auto& sub = context.subscriber();
+  sub.on<v1::RobotPose>(topics::pose(robot_id_), [this](const transport::Received<v1::RobotPose>& r) {
+    on_pose(r.message, r.header.sim_time_ns());
+  });
+  sub.on<v1::ExecutablePath>(topics::path(robot_id_),
+                             [this](const transport::Received<v1::ExecutablePath>& r) { on_path(r.message); });
+  sub.on<v1::RobotPose>(std::string(topics::kTeamPose), [this](const transport::Received<v1::RobotPose>& r) {
+    const std::string& id = r.header.robot_id();
+    if (id == robot_id_ || id.empty()) return;
+    Peer& peer = peers_[id];
+    peer.pose = r.message;
+    peer.pose_ns = core::monotonic_ns();
+  });
+  sub.on<v1::PathFragment>(std::string(topics::kTeamPath), [this](const transport::Received<v1::PathFragment>& r) {
+    const std::string& id = r.header.robot_id();
+    if (id == robot_id_ || id.empty()) return;
+    Peer& peer = peers_[id];
+    peer.fragment = from_proto(r.message, id);
+    peer.fragment_ns = core::monotonic_ns();
+  });
+  sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
+                             [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
+
+  const auto period = std::chrono::duration_cast<std::chrono::nanoseconds>(
+      std::chrono::duration<double>(resolver_->options().cycle_s));
+  context.loop().add_timer(period, [this] { cycle(); });
+  context.set_state(v1::SERVICE_STATE_RUNNING, mission_ == Mission::kActive ? "waiting for pose" : mission_reason_);
+}
+
+void SafetyService::on_shutdown(service::ServiceContext&) {
+  // Leave the robot standing, not driving the last approved path unattended.
+  halt("safety service stopped");
+}
+
+double SafetyService::now_s() const {
+  // Sim time when the driver provides it (so timeouts scale with a faster-than-real-time sim).
+  return sim_time_ns_ > 0 ? core::ns_to_s(sim_time_ns_) : core::ns_to_s(core::monotonic_ns());
+}
+
+void SafetyService::on_pose(const v1::RobotPose& pose, int64_t sim_time_ns) {
+  position_ = vec(pose.pose().position_m());
+  if (sim_time_ns > 0) sim_time_ns_ = sim_time_ns;
+}
+
+void SafetyService::on_path(const v1::ExecutablePath& path) {
+  desired_.clear();
+  for (const auto& w : path.waypoints_m()) desired_.push_back(vec(w));
+  path_speed_mps_ = path.speed_mps() > 0.0 ? path.speed_mps() : default_speed_mps_;
+  look_at_.reset();
+  if (path.has_goal() && path.goal().has_look_at_m()) look_at_ = vec(path.goal().look_at_m());
+}
+
+void SafetyService::on_mission(const v1::MissionCommand& command) {
+  if (!command.target_robot().empty() && command.target_robot() != robot_id_) return;
+  switch (command.command_case()) {
+    case v1::MissionCommand::kEmergencyStop:
+      mission_ = Mission::kEmergency;
+      mission_reason_ = "emergency stop" + (command.emergency_stop().reason().empty()
+                                                ? std::string()
+                                                : ": " + command.emergency_stop().reason());
+      emergency_stops_->increment();
+      core::LogLine(core::LogLevel::kWarn, "safety") << robot_id_ << ": " << mission_reason_;
+      halt(mission_reason_);  // at once, not at the next cycle
+      break;
+    case v1::MissionCommand::kStop:
+      mission_ = Mission::kStopped;
+      mission_reason_ = "mission stopped";
+      halt(mission_reason_);
+      break;
+    case v1::MissionCommand::kStart:
+      if (mission_ != Mission::kActive) core::LogLine(core::LogLevel::kInfo, "safety") << robot_id_ << ": mission start";
+      mission_ = Mission::kActive;
+      mission_reason_.clear();
+      break;
+    default:
+      break;
+  }
+}
+
+void SafetyService::halt(const std::string& reason) {
+  resolver_->reset();
+  Decision stop;
+  stop.kind = DecisionKind::kStop;
+  stop.reason = reason;
+  last_ = stop;
+  publish(to_motion_command(stop));
+  if (position_) share_fragment();
+}
+
+std::vector<Fragment> SafetyService::live_peers(int64_t now_ns) const {
+  std::vector<Fragment> out;
+  const int64_t timeout_ns = core::s_to_ns(peer_timeout_s_);
+  for (const auto& [id, peer] : peers_) {
+    if (peer.fragment && now_ns - peer.fragment_ns < timeout_ns) {
+      out.push_back(*peer.fragment);
+    } else if (peer.pose && now_ns - peer.pose_ns < timeout_ns) {
+      out.push_back(fragment_from_pose(id, *peer.pose, resolver_->options().eta_p_m));
+    }
+  }
+  return out;
+}
+
+void SafetyService::cycle() {
+  if (!position_) {
+    context_->set_state(v1::SERVICE_STATE_DEGRADED, "waiting for pose on " + topics::pose(robot_id_));
+    return;
+  }
+  if (mission_ != Mission::kActive) {
+    // Repeat the stop: a driver that missed the first one still halts within a cycle.
+    publish(to_motion_command(last_));
+    share_fragment();
+    context_->set_state(v1::SERVICE_STATE_RUNNING, mission_reason_);
+    return;
+  }
+  const Decision decision =
+      resolver_->decide(*position_, desired_, path_speed_mps_, live_peers(core::monotonic_ns()), now_s());
+  last_ = decision;
+  v1::MotionCommand command = to_motion_command(decision);
+  if (decision.kind == DecisionKind::kFollow && look_at_) {
+    auto* follow = command.mutable_follow();
+    follow->mutable_look_at_m()->set_x(look_at_->x());
+    follow->mutable_look_at_m()->set_y(look_at_->y());
+    follow->mutable_look_at_m()->set_z(look_at_->z());
+    follow->set_has_look_at(true);
+  }
+  publish(command);
+  share_fragment();
+
+  const ResolverCounters& c = resolver_->counters();
+  conflicts_->increment(static_cast<double>(c.conflicts_detected - reported_.conflicts_detected));
+  yields_->increment(static_cast<double>(c.yields - reported_.yields));
+  detours_->increment(static_cast<double>(c.detours - reported_.detours));
+  deadlock_breaks_->increment(static_cast<double>(c.deadlock_breaks - reported_.deadlock_breaks));
+  reported_ = c;
+  yielding_->set(decision.yielding_to.empty() ? 0.0 : 1.0);
+  std::string detail = decision.kind == DecisionKind::kFollow ? "following" : "stopped";
+  if (!decision.reason.empty()) detail += ": " + decision.reason;
+  context_->set_state(v1::SERVICE_STATE_RUNNING, detail);
+}
+
+void SafetyService::publish(const v1::MotionCommand& command) {
+  context_->publisher().publish(topics::motion(robot_id_), command, sim_time_ns_);
+}
+
+void SafetyService::share_fragment() {
+  if (!position_) return;
+  // Outside an active mission the robot stands still whatever the resolver last decided.
+  Fragment f = resolver_->fragment(*position_);
+  if (mission_ != Mission::kActive) {
+    f.stationary = true;
+    f.speed_mps = 0.0;
+    f.waypoints_m.clear();
+    f.yielding_to.clear();
+  }
+  context_->publisher().publish(topics::kTeamPath, to_proto(f), sim_time_ns_);
+}
+
+void SafetyService::fill_status(v1::ServiceStatus& status) {
+  const ResolverCounters& c = resolver_ ? resolver_->counters() : ResolverCounters{};
+  auto add = [&](const char* name, double value) {
+    auto* v = status.add_values();
+    v->set_name(name);
+    v->set_value(value);
+  };
+  add("conflicts", static_cast<double>(c.conflicts_detected));
+  add("yields", static_cast<double>(c.yields));
+  add("detours", static_cast<double>(c.detours));
+  add("emergency_stops", emergency_stops_ ? emergency_stops_->value() : 0.0);
+}
+
+}  // namespace hexplore::safety

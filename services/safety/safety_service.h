@@ -1,0 +1,79 @@
+#pragma once
+// The safety process of one robot: takes the executable path from planning, resolves conflicts
+// with teammates (paper "Path-Conflict Resolution Strategy") and sends the approved path or a
+// stop to the robot driver. Shares its own near path on team/path at the decision rate, and
+// obeys mission commands: an emergency stop halts the robot at once and refuses paths until a
+// StartMission; a StopMission halts it the same way.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "common/safety/resolver.h"
+#include "common/service/service.h"
+#include "hexplore/v1/mission.pb.h"
+#include "hexplore/v1/motion.pb.h"
+#include "hexplore/v1/plan.pb.h"
+#include "hexplore/v1/pose.pb.h"
+#include "hexplore/v1/safety.pb.h"
+
+namespace hexplore::safety {
+
+class SafetyService : public service::Service {
+ public:
+  core::ServiceKind kind() const override { return core::ServiceKind::kSafety; }
+  // Options (after --config/--robot): --wait-for-start true|false (default false: drive as soon
+  // as planning sends a path; true: hold still until the station's StartMission).
+  void setup(service::ServiceContext& context) override;
+  void on_shutdown(service::ServiceContext& context) override;
+  void fill_status(v1::ServiceStatus& status) override;
+
+ private:
+  enum class Mission { kActive, kStopped, kEmergency };
+  struct Peer {
+    std::optional<Fragment> fragment;
+    int64_t fragment_ns = 0;          // monotonic receive time
+    std::optional<v1::RobotPose> pose;
+    int64_t pose_ns = 0;
+  };
+
+  void on_pose(const v1::RobotPose& pose, int64_t sim_time_ns);
+  void on_path(const v1::ExecutablePath& path);
+  void on_mission(const v1::MissionCommand& command);
+  // One decision: resolve, command the driver, share the fragment.
+  void cycle();
+  void halt(const std::string& reason);
+  std::vector<Fragment> live_peers(int64_t now_ns) const;
+  void publish(const v1::MotionCommand& command);
+  void share_fragment();
+  double now_s() const;
+
+  service::ServiceContext* context_ = nullptr;
+  std::string robot_id_;
+  std::unique_ptr<ConflictResolver> resolver_;
+  double default_speed_mps_ = 0.5;
+  double peer_timeout_s_ = 1.5;
+  std::optional<Eigen::Vector3d> position_;
+  int64_t sim_time_ns_ = 0;
+  Path desired_;
+  double path_speed_mps_ = 0.0;
+  std::optional<Eigen::Vector3d> look_at_;
+  std::map<std::string, Peer> peers_;
+  Mission mission_ = Mission::kActive;
+  std::string mission_reason_;
+  Decision last_;
+  ResolverCounters reported_;   // counters already added to the metrics
+
+  metrics::Counter* conflicts_ = nullptr;
+  metrics::Counter* yields_ = nullptr;
+  metrics::Counter* detours_ = nullptr;
+  metrics::Counter* deadlock_breaks_ = nullptr;
+  metrics::Counter* emergency_stops_ = nullptr;
+  metrics::Gauge* yielding_ = nullptr;
+};
+
+}  // namespace hexplore::safety
