@@ -1,0 +1,239 @@
+#include "services/station/station_service.h"
+
+#include <cstdio>
+
+#include "common/core/clock.h"
+#include "common/core/config_error.h"
+#include "common/core/log.h"
+#include "common/station/results_writer.h"
+#include "common/transport/topics.h"
+#include "hexplore/v1/hlmap.pb.h"
+#include "hexplore/v1/plan.pb.h"
+#include "hexplore/v1/pose.pb.h"
+#include "hexplore/v1/safety.pb.h"
+#include "hexplore/v1/voxels.pb.h"
+
+namespace hexplore::station {
+namespace {
+
+using namespace std::chrono_literals;
+constexpr auto kTick = 250ms;
+constexpr auto kSnapshotTimeout = 5000ms;
+constexpr double kFinalSnapshotWaitS = 8.0;
+
+double parse_double(const std::map<std::string, std::string>& args, const std::string& name, double fallback) {
+  const auto it = args.find(name);
+  if (it == args.end()) return fallback;
+  try {
+    size_t used = 0;
+    const double v = std::stod(it->second, &used);
+    if (used != it->second.size() || !std::isfinite(v) || v < 0) throw std::invalid_argument(name);
+    return v;
+  } catch (const std::exception&) {
+    throw core::ConfigError("<command line>", "--" + name, "expected a non-negative number, got '" + it->second + "'");
+  }
+}
+
+bool parse_bool(const std::map<std::string, std::string>& args, const std::string& name, bool fallback) {
+  const auto it = args.find(name);
+  if (it == args.end()) return fallback;
+  if (it->second == "true" || it->second == "1" || it->second == "yes") return true;
+  if (it->second == "false" || it->second == "0" || it->second == "no") return false;
+  throw core::ConfigError("<command line>", "--" + name, "expected true or false, got '" + it->second + "'");
+}
+
+double wall_s() { return core::ns_to_s(core::monotonic_ns()); }
+
+template <typename M>
+size_t wire_bytes(const transport::Received<M>& r) {
+  return r.topic.size() + r.header.ByteSizeLong() + r.message.ByteSizeLong();
+}
+
+}  // namespace
+
+StationOptions StationOptions::from_arguments(const std::map<std::string, std::string>& args) {
+  StationOptions o;
+  if (auto it = args.find("results"); it != args.end()) o.results_dir = it->second;
+  o.snapshot_period_s = parse_double(args, "snapshot-period-s", o.snapshot_period_s);
+  o.start_wait_s = parse_double(args, "start-wait-s", o.start_wait_s);
+  o.settle_s = parse_double(args, "settle-s", o.settle_s);
+  o.progress_period_s = parse_double(args, "progress-period-s", o.progress_period_s);
+  o.autostart = parse_bool(args, "autostart", o.autostart);
+  o.observable = parse_bool(args, "observable", o.observable);
+  return o;
+}
+
+void StationService::setup(service::ServiceContext& context) {
+  context_ = &context;
+  options_ = StationOptions::from_arguments(context.arguments());
+  start_wall_ns_ = core::monotonic_ns();
+  EvaluatorOptions eval;
+  eval.observable = options_.observable;
+  evaluator_ = std::make_unique<CompletenessEvaluator>(context.team(), eval);
+  recorder_ = std::make_unique<TeamRecorder>(context.team());
+  recorder_->record().mode = "processes";
+  MissionMonitorOptions monitor;
+  monitor.time_limit_s = context.team().time_limit_s;
+  monitor.settle_s = options_.settle_s;
+  monitor.silent_after_s = std::max(10.0, 2.0 * context.team().params.eta_t_s);
+  monitor_ = std::make_unique<MissionMonitor>(monitor);
+
+  subscribe_team(context);
+  context.responder().serve<v1::MissionCommand, v1::ServiceStatus>(
+      [this](const transport::Received<v1::MissionCommand>& request) {
+        publish_mission(request.message);
+        v1::ServiceStatus ack;
+        ack.set_service("station");
+        ack.set_state(v1::SERVICE_STATE_RUNNING);
+        ack.set_detail("relayed " + request.message.ShortDebugString());
+        return ack;
+      });
+  context.loop().add_timer(kTick, [this] { tick(); });
+  core::LogLine(core::LogLevel::kInfo, "station")
+      << "recording " << context.team().robots.size() << " robots on '" << context.team().scene << "' into "
+      << options_.results_dir;
+}
+
+void StationService::subscribe_team(service::ServiceContext& context) {
+  for (const auto& robot : context.team().robots) {
+    for (auto kind : {core::ServiceKind::kSim, core::ServiceKind::kHlmap, core::ServiceKind::kPlanning,
+                      core::ServiceKind::kSafety})
+      context.connect(robot.id, kind);
+  }
+  auto& sub = context.subscriber();
+  sub.on<v1::RobotPose>(std::string(transport::topics::kTeamPose), [this](const auto& r) {
+    const std::string robot = r.header.robot_id();
+    if (!recorder_->on_pose(robot, core::ns_to_s(r.header.sim_time_ns()), r.message)) return;
+    if (!heard_[robot] && !first_heard_wall_s_) first_heard_wall_s_ = wall_s();
+    heard_[robot] = true;
+    recorder_->on_team_message(robot, r.topic, wire_bytes(r));
+  });
+  sub.on<v1::MapIncrement>(std::string(transport::topics::kTeamMap),
+                           [this](const auto& r) { recorder_->on_team_message(r.header.robot_id(), r.topic, wire_bytes(r)); });
+  sub.on<v1::TeamSolution>(std::string(transport::topics::kTeamPlan),
+                           [this](const auto& r) { recorder_->on_team_message(r.header.robot_id(), r.topic, wire_bytes(r)); });
+  sub.on<v1::PathFragment>(std::string(transport::topics::kTeamPath),
+                           [this](const auto& r) { recorder_->on_team_message(r.header.robot_id(), r.topic, wire_bytes(r)); });
+  for (const auto& robot : context.team().robots) {
+    sub.on<v1::ServiceStatus>(transport::topics::status(robot.id), [this](const auto& r) {
+      if (r.header.service() != "planning") return;
+      const int views = recorder_->on_planning_status(r.header.robot_id(), r.message);
+      if (views >= 0 && recorder_->started())
+        monitor_->on_planning_status(r.header.robot_id(), recorder_->mission_time_s(), views);
+    });
+  }
+}
+
+void StationService::publish_mission(const v1::MissionCommand& command) {
+  context_->publisher().publish(transport::topics::kTeamMission, command,
+                                core::s_to_ns(recorder_->latest_sim_time_s()));
+  core::LogLine(core::LogLevel::kInfo, "station") << "mission command: " << command.ShortDebugString();
+}
+
+void StationService::tick() {
+  if (finished_) return;
+  const size_t robots = context_->team().robots.size();
+  if (!recorder_->started()) {
+    const bool everyone = heard_.size() == robots;
+    const bool waited = first_heard_wall_s_ && wall_s() - *first_heard_wall_s_ > options_.start_wait_s;
+    if (options_.autostart && (everyone || waited)) {
+      v1::MissionCommand start;
+      start.mutable_start();
+      publish_mission(start);
+      recorder_->start(recorder_->latest_sim_time_s());
+      core::LogLine(core::LogLevel::kInfo, "station")
+          << "mission started with " << heard_.size() << "/" << robots << " robots heard";
+    }
+    return;
+  }
+  const double t = recorder_->mission_time_s();
+  if (t - last_snapshot_s_ >= options_.snapshot_period_s && snapshots_pending_ == 0) {
+    last_snapshot_s_ = t;
+    request_snapshots();
+  }
+  if (t - last_progress_s_ >= options_.progress_period_s) {
+    last_progress_s_ = t;
+    print_progress();
+  }
+  if (const auto reason = monitor_->check(t)) finish(*reason);
+}
+
+void StationService::request_snapshots() {
+  for (const auto& robot : context_->team().robots) {
+    v1::OccupiedVoxelsRequest request;
+    request.set_requester("station");
+    ++snapshots_pending_;
+    context_->requester(robot.id, core::ServiceKind::kMapping)
+        .request<v1::OccupiedVoxelsRequest, v1::OccupiedVoxels>(
+            request,
+            [this, id = robot.id](const transport::Received<v1::OccupiedVoxels>* reply) {
+              --snapshots_pending_;
+              if (reply != nullptr)
+                evaluator_->set_robot_map(id, reply->message.resolution_m(),
+                                          {reply->message.keys_xyz().data(),
+                                           static_cast<size_t>(reply->message.keys_xyz_size())});
+              if (snapshots_pending_ == 0) recorder_->on_completeness(evaluator_->evaluate(recorder_->mission_time_s()));
+            },
+            kSnapshotTimeout);
+  }
+}
+
+void StationService::print_progress() {
+  const auto& samples = recorder_->record().completeness;
+  const double completeness = samples.empty() ? 0.0 : samples.back().team;
+  std::string states;
+  for (const auto& [id, track] : recorder_->record().robots)
+    states += " " + id + "=" + (track.last_state.empty() ? "?" : track.last_state.substr(13));
+  std::printf("[station] t=%6.1fs completeness=%5.1f%% live=%d%s\n", recorder_->mission_time_s(),
+              100.0 * completeness, monitor_->live_robots(recorder_->mission_time_s()), states.c_str());
+  std::fflush(stdout);
+}
+
+void StationService::finish(const std::string& reason) {
+  finished_ = true;
+  end_reason_ = reason;
+  v1::MissionCommand stop;
+  stop.mutable_stop();
+  publish_mission(stop);
+  core::LogLine(core::LogLevel::kInfo, "station") << "mission over: " << reason << "; fetching final maps";
+  // One last snapshot round, then write and stop; waits at most kFinalSnapshotWaitS.
+  const double deadline = wall_s() + kFinalSnapshotWaitS;
+  if (snapshots_pending_ == 0) request_snapshots();
+  context_->loop().add_timer(kTick, [this, deadline] {
+    if (snapshots_pending_ > 0 && wall_s() < deadline) return;
+    auto& record = recorder_->record();
+    record.end_reason = end_reason_;
+    record.exploration_time_s = recorder_->mission_time_s();
+    record.wall_time_s = core::ns_to_s(core::monotonic_ns() - start_wall_ns_);
+    record.final_map_points_m = evaluator_->union_points();
+    try {
+      const auto files = write_results(record, options_.results_dir);
+      std::printf("[station] mission over (%s) after %.1f s sim time; completeness %.1f%%; results in %s (%zu files)\n",
+                  end_reason_.c_str(), record.exploration_time_s, 100.0 * record.final_team_completeness(),
+                  options_.results_dir.c_str(), files.size());
+      std::fflush(stdout);
+    } catch (const std::exception& e) {
+      core::log(core::LogLevel::kError, "station", e.what());
+    }
+    context_->loop().stop();
+  });
+}
+
+void StationService::on_shutdown(service::ServiceContext& context) {
+  if (!finished_ && recorder_ && recorder_->started())
+    core::log(core::LogLevel::kWarn, "station", "stopped before the mission ended; no results written");
+}
+
+void StationService::fill_status(v1::ServiceStatus& status) {
+  if (!recorder_) return;
+  auto add = [&](const std::string& name, double value) {
+    auto* v = status.add_values();
+    v->set_name(name);
+    v->set_value(value);
+  };
+  add("mission_time_s", recorder_->mission_time_s());
+  const auto& samples = recorder_->record().completeness;
+  add("completeness", samples.empty() ? 0.0 : samples.back().team);
+}
+
+}  // namespace hexplore::station

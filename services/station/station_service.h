@@ -1,0 +1,64 @@
+#pragma once
+// The ground station: starts the mission, relays mission commands (start, stop, emergency
+// stop, switch planner) to the team, and records the experiment: trajectories and traffic
+// from the team topics, planning rounds from the planners' statuses, and completeness from
+// periodic map snapshots of every robot's mapping service. When the mission is over it
+// writes the results folder and stops (its process exit ends a launched team).
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "common/service/service.h"
+#include "common/station/completeness_evaluator.h"
+#include "common/station/mission_monitor.h"
+#include "common/station/team_recorder.h"
+#include "hexplore/v1/mission.pb.h"
+
+namespace hexplore::station {
+
+struct StationOptions {
+  std::string results_dir = "results/latest";
+  double snapshot_period_s = 10.0;  // how often robots' maps are fetched for completeness
+  double start_wait_s = 60.0;       // start even if some robot is silent after this long
+  bool autostart = true;            // send StartMission once every robot is heard
+  bool observable = true;           // compute the observable-completeness mask
+  double settle_s = 5.0;            // see MissionMonitorOptions
+  double progress_period_s = 5.0;   // progress line on stdout
+
+  // From the service's "--name value" arguments; throws core::ConfigError on a bad value.
+  static StationOptions from_arguments(const std::map<std::string, std::string>& arguments);
+};
+
+class StationService : public service::Service {
+ public:
+  StationService() = default;
+  core::ServiceKind kind() const override { return core::ServiceKind::kStation; }
+  void setup(service::ServiceContext& context) override;
+  void on_shutdown(service::ServiceContext& context) override;
+  void fill_status(v1::ServiceStatus& status) override;
+
+ private:
+  void subscribe_team(service::ServiceContext& context);
+  void tick();
+  void request_snapshots();
+  void publish_mission(const v1::MissionCommand& command);
+  void print_progress();
+  void finish(const std::string& reason);
+
+  service::ServiceContext* context_ = nullptr;
+  StationOptions options_;
+  std::unique_ptr<CompletenessEvaluator> evaluator_;
+  std::unique_ptr<TeamRecorder> recorder_;
+  std::unique_ptr<MissionMonitor> monitor_;
+  std::map<std::string, bool> heard_;  // robots whose pose arrived
+  std::optional<double> first_heard_wall_s_;
+  double last_snapshot_s_ = -1e9;
+  double last_progress_s_ = -1e9;
+  int snapshots_pending_ = 0;
+  bool finished_ = false;
+  std::string end_reason_;
+  int64_t start_wall_ns_ = 0;
+};
+
+}  // namespace hexplore::station
