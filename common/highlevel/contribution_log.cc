@@ -6,7 +6,7 @@ MapUpdate ContributionLog::record(const SupervoxelSegmenter& segmenter, const Se
   MapUpdate u;
   u.removals = change.removed;
   for (uint64_t key : change.upserted) {
-    if (const Supervoxel* sv = segmenter.find(key)) u.upserts.push_back(*sv);
+    if (const Supervoxel* sv = segmenter.find(key)) u.upserts.push_back(wire_rounded(*sv));
   }
   u.edge_upserts = change.edges_added;
   u.edge_removals = change.edges_removed;

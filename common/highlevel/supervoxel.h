@@ -53,6 +53,14 @@ struct Supervoxel {
   friend bool operator==(const Supervoxel&, const Supervoxel&) = default;
 };
 
+// The supervoxel as it travels on the wire (centre and normal as float). Sources fuse their
+// own contribution in this form too, so every robot fuses bit-identical inputs.
+inline Supervoxel wire_rounded(Supervoxel s) {
+  s.center = s.center.cast<float>().cast<double>();
+  s.normal = s.normal.cast<float>().cast<double>();
+  return s;
+}
+
 // Undirected topology edge key: the two supervoxel keys ordered so that a < b.
 struct EdgeKey {
   uint64_t a = 0;
