@@ -113,33 +113,36 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
       ++stats.voxels_created;
     }
     VoxelData& d = node->data();
+    // A voxel gaining under a quarter of its points shifts a neighbour's fused Gaussian (27
+    // voxels) by far less; skipping those neighbours keeps a revisited area cheap to update.
+    const bool propagates = created || acc.n * 4 >= d.count;
     d.count += acc.n;
     for (int a = 0; a < 3; ++a) d.sum[a] += static_cast<float>(acc.s[a]);
     for (int a = 0; a < 6; ++a) d.sum_sq[a] += static_cast<float>(acc.q[a]);
-    touched_.push_back({acc.key, node, acc.n});
+    touched_.push_back({acc.key, node, acc.n, propagates, created});
   }
   stats.voxels_touched = touched_.size();
   if (touched_.empty()) return stats;
 
-  // 3. Normals and sparsity of the touched voxels and their 26-neighbours.
-  memo_.clear(touched_.size() * 16);
-  NeighbourLookup lookup(tree_, memo_);
+  // 3. Normals and sparsity of the touched voxels and of the 26-neighbours of those that
+  //    changed enough to matter to them.
+  brick_index_.clear(touched_.size());
+  bricks_.clear();
+  NeighbourLookup lookup(tree_, bricks_, brick_index_);
   geometry_set_.clear();
   for (const Touched& t : touched_) {
     t.node->data().flags |= kFlagScratchGeometry;
     geometry_set_.push_back({t.key, t.node});
   }
   for (const Touched& t : touched_) {
-    for (int dz = -1; dz <= 1; ++dz) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          const octomap::OcTreeKey k = NeighbourLookup::offset(t.key, dx, dy, dz);
-          VoxelNode* n = lookup.at(k);
-          if (n == nullptr || (n->data().flags & kFlagScratchGeometry) != 0) continue;
-          n->data().flags |= kFlagScratchGeometry;
-          geometry_set_.push_back({k, n});
-        }
-      }
+    if (!t.propagates) continue;
+    VoxelNode* block[27];
+    lookup.gather27(t.key, block);
+    for (int i = 0; i < 27; ++i) {
+      VoxelNode* n = block[i];
+      if (n == nullptr || (n->data().flags & kFlagScratchGeometry) != 0) continue;
+      n->data().flags |= kFlagScratchGeometry;
+      geometry_set_.push_back({NeighbourLookup::offset(t.key, i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1), n});
     }
   }
   for (size_t i = 0; i < geometry_set_.size(); ++i) {
@@ -151,7 +154,10 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
   for (const Touched& t : touched_) update_observation(t.node->data(), centre_of(t.key), scan.sensor_origin, t.points);
 
   // 5. Flags and risk masks of every voxel whose terrain sample may have changed: the geometry
-  //    set, the columns around touched voxels (step) and the cells below them (clearance).
+  //    set (its 26-neighbourhoods), and around new voxels also the columns within the step
+  //    window (a new cell can change which run a neighbour column's surface is) and the cells
+  //    below within the clearance window. An existing voxel's mean moves by under a quarter
+  //    of a cell when it propagates, which only its 26-neighbours' steps notice.
   risk_set_.clear();
   for (const Pending& g : geometry_set_) {
     g.node->data().flags |= kFlagScratchRisk;
@@ -164,15 +170,16 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
     risk_set_.push_back({k, n});
   };
   for (const Touched& t : touched_) {
+    if (!t.created) continue;
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
-        for (int dz = -window_.step_cells; dz <= window_.step_cells; ++dz) {
-          if (dx == 0 && dy == 0) continue;
+        for (int dz = 2; dz <= window_.step_cells; ++dz) {
           add_risk(NeighbourLookup::offset(t.key, dx, dy, dz));
+          add_risk(NeighbourLookup::offset(t.key, dx, dy, -dz));
         }
       }
     }
-    for (int dz = -window_.clearance_cells; dz < 0; ++dz) add_risk(NeighbourLookup::offset(t.key, 0, 0, dz));
+    for (int dz = -window_.clearance_cells; dz < -1; ++dz) add_risk(NeighbourLookup::offset(t.key, 0, 0, dz));
   }
   for (const Pending& r : risk_set_) refresh_state(r.key, r.node->data(), lookup);
   for (const Pending& r : risk_set_) {

@@ -15,6 +15,7 @@
 
 #include "common/perception/flat_key_map.h"
 #include "common/perception/map_params.h"
+#include "common/perception/neighbour_lookup.h"
 #include "common/perception/teammate_filter.h"
 #include "common/perception/terrain_metrics.h"
 #include "common/perception/voxel_octree.h"
@@ -90,6 +91,8 @@ class PerceptionMap {
     octomap::OcTreeKey key;
     VoxelNode* node;
     uint32_t points;
+    bool propagates;  // new, or its Gaussian changed enough to move its neighbours' metrics
+    bool created;
   };
   struct Accumulator {
     octomap::OcTreeKey key;
@@ -120,7 +123,8 @@ class PerceptionMap {
   std::vector<Touched> touched_;
   std::vector<Pending> geometry_set_;
   std::vector<Pending> risk_set_;
-  FlatKeyMap<VoxelNode*> memo_;
+  std::vector<NeighbourLookup::Brick> bricks_;
+  FlatKeyMap<uint32_t> brick_index_;
 };
 
 }  // namespace hexplore::perception

@@ -45,47 +45,46 @@ void update_geometry(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLooku
   // Moments of the whole neighbourhood relative to this voxel's centre: each neighbour's
   // moments are shifted by its centre offset o: S1' = S1 + n o, S2' = S2 + S1 o^T + o S1^T + n o o^T.
   const double res = params.resolution_m;
+  VoxelNode* block[27];
+  lookup.gather27(key, block);
   double n = 0.0;
-  Eigen::Vector3d s1 = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d s2 = Eigen::Matrix3d::Zero();
+  double s1[3] = {0, 0, 0};
+  double s2[6] = {0, 0, 0, 0, 0, 0};  // xx xy xz yy yz zz
   int empty = 0;
-  for (int dz = -1; dz <= 1; ++dz) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const VoxelData* nd = nullptr;
-        if (dx == 0 && dy == 0 && dz == 0) {
-          nd = &d;
-        } else {
-          const VoxelNode* node = lookup.at(key, dx, dy, dz);
-          if (node == nullptr) {
-            ++empty;
-            continue;
-          }
-          nd = &node->data();
-        }
-        const double cnt = nd->count;
-        const Eigen::Vector3d a(nd->sum[0], nd->sum[1], nd->sum[2]);
-        Eigen::Matrix3d q;
-        q << nd->sum_sq[0], nd->sum_sq[1], nd->sum_sq[2], nd->sum_sq[1], nd->sum_sq[3], nd->sum_sq[4], nd->sum_sq[2],
-            nd->sum_sq[4], nd->sum_sq[5];
-        const Eigen::Vector3d o(dx * res, dy * res, dz * res);
-        n += cnt;
-        s1 += a + cnt * o;
-        s2 += q + a * o.transpose() + o * a.transpose() + cnt * o * o.transpose();
-      }
+  for (int i = 0; i < 27; ++i) {
+    const VoxelData* nd = i == 13 ? &d : (block[i] != nullptr ? &block[i]->data() : nullptr);
+    if (nd == nullptr) {
+      ++empty;
+      continue;
     }
+    const double o[3] = {(i % 3 - 1) * res, (i / 3 % 3 - 1) * res, (i / 9 - 1) * res};
+    const double c = nd->count;
+    const double a[3] = {nd->sum[0], nd->sum[1], nd->sum[2]};
+    n += c;
+    for (int k = 0; k < 3; ++k) s1[k] += a[k] + c * o[k];
+    s2[0] += nd->sum_sq[0] + 2 * a[0] * o[0] + c * o[0] * o[0];
+    s2[1] += nd->sum_sq[1] + a[0] * o[1] + o[0] * a[1] + c * o[0] * o[1];
+    s2[2] += nd->sum_sq[2] + a[0] * o[2] + o[0] * a[2] + c * o[0] * o[2];
+    s2[3] += nd->sum_sq[3] + 2 * a[1] * o[1] + c * o[1] * o[1];
+    s2[4] += nd->sum_sq[4] + a[1] * o[2] + o[1] * a[2] + c * o[1] * o[2];
+    s2[5] += nd->sum_sq[5] + 2 * a[2] * o[2] + c * o[2] * o[2];
   }
   d.empty_neighbours = static_cast<uint8_t>(empty);
   if (n < params.min_points_for_normal) return;
 
-  const Eigen::Vector3d mean = s1 / n;
-  const Eigen::Matrix3d cov = s2 / n - mean * mean.transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  const Eigen::Vector3d mean(s1[0] / n, s1[1] / n, s1[2] / n);
+  Eigen::Matrix3d cov_d;
+  cov_d << s2[0], s2[1], s2[2], s2[1], s2[3], s2[4], s2[2], s2[4], s2[5];
+  cov_d = cov_d / n - mean * mean.transpose();
+  // The moments are offsets within half a metre, so the decomposition is safe in float (and
+  // about twice as fast as in double).
+  const Eigen::Matrix3f cov = cov_d.cast<float>();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> eig;
   eig.computeDirect(cov);
   // Points on a line (one far LiDAR ring) leave the normal undetermined within a plane.
   const double line_limit = 0.01 * res * res;
   if (eig.eigenvalues()(1) < line_limit) return;
-  Eigen::Vector3d normal = eig.eigenvectors().col(0).normalized();
+  Eigen::Vector3d normal = eig.eigenvectors().col(0).cast<double>().normalized();
 
   if (orient_to_sensor || !d.has_normal()) {
     if (normal.dot(sensor - (centre + mean)) < 0.0) normal = -normal;
@@ -110,6 +109,13 @@ TerrainSample sample_terrain(const octomap::OcTreeKey& key, const VoxelData& d, 
   // Surface height of each neighbouring column: the occupied cell nearest to this voxel's
   // level, then up its contiguous run (a wall's run reaches the window top: a large step; an
   // overhang above a floor is a separate run and does not count).
+  VoxelNode* block[27];
+  lookup.gather27(key, block);
+  // Cell (dx, dy, dz) of the neighbourhood, from the gathered block when |dz| <= 1.
+  auto cell = [&](int dx, int dy, int dz) -> VoxelNode* {
+    if (dz >= -1 && dz <= 1) return block[(dz + 1) * 9 + (dy + 1) * 3 + (dx + 1)];
+    return lookup.at(key, dx, dy, dz);
+  };
   double heights[9];
   double xs[9];
   double ys[9];
@@ -124,18 +130,18 @@ TerrainSample sample_terrain(const octomap::OcTreeKey& key, const VoxelData& d, 
       int found = 0;
       bool any = false;
       for (int r = 0; r <= window.step_cells && !any; ++r) {
-        if (lookup.at(key, dx, dy, r) != nullptr) {
+        if (cell(dx, dy, r) != nullptr) {
           found = r;
           any = true;
-        } else if (r > 0 && lookup.at(key, dx, dy, -r) != nullptr) {
+        } else if (r > 0 && cell(dx, dy, -r) != nullptr) {
           found = -r;
           any = true;
         }
       }
       if (!any) continue;  // unknown column: sparsity accounts for it
       int top = found;
-      while (top < window.step_cells && lookup.at(key, dx, dy, top + 1) != nullptr) ++top;
-      const VoxelNode* node = lookup.at(key, dx, dy, top);
+      while (top < window.step_cells && cell(dx, dy, top + 1) != nullptr) ++top;
+      const VoxelNode* node = cell(dx, dy, top);
       const double hz = mean_z(node->data(), centre.z() + top * res);
       t.step_m = std::max(t.step_m, std::abs(hz - h));
       heights[m] = hz;
@@ -165,7 +171,7 @@ TerrainSample sample_terrain(const octomap::OcTreeKey& key, const VoxelData& d, 
   // Overhead obstacles: the first voxel above that is not this surface's own continuation
   // (a ramp splits over two cells of one column with means less than half a cell apart).
   for (int dz = 1; dz <= window.clearance_cells; ++dz) {
-    const VoxelNode* node = lookup.at(key, 0, 0, dz);
+    const VoxelNode* node = cell(0, 0, dz);
     if (node == nullptr) continue;
     const double gap = mean_z(node->data(), centre.z() + dz * res) - h;
     if (gap > 0.5 * res) {
