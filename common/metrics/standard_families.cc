@@ -17,7 +17,7 @@ TransportFamilies TransportFamilies::create(Registry& r) {
                                       "Bytes accepted (topic + header + payload frames), per topic and peer");
   f.dropped = r.counter_family("hexplore_transport_dropped_total",
                                "Messages dropped, by reason (malformed, wrong_version, wrong_type, oversize, "
-                               "fault_injected, timeout, send_failed)");
+                               "fault_injected, timeout, send_failed, handler_error)");
   f.latency = r.histogram_family("hexplore_transport_latency_seconds",
                                  "Receive wall time minus the sender's header send time", latency_buckets_s());
   return f;

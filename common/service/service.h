@@ -122,6 +122,8 @@ struct HostOptions {
   // Composition: rewrite transport.scheme to inproc so that all services share this process's Context.
   bool compose = false;
   std::map<std::string, std::string> arguments;
+  // Fault injection on every service's PUB socket (rig tests of radio drop-outs).
+  transport::FaultInjection publisher_faults;
 };
 
 // Runs one or several services in this process, each on its own loop thread.
@@ -155,6 +157,7 @@ class ServiceHost {
 
  private:
   struct Entry;
+  transport::SocketOptions publisher_options(const ServiceContext& ctx) const;
   // First member, so it is destroyed last: zmq_ctx_term waits for every socket to close.
   transport::Context transport_;
   core::TeamConfig team_;
@@ -167,7 +170,8 @@ class ServiceHost {
 
 // main() of a single-service process:
 //   <exe> --config FILE --robot ID [--log-level debug|info|warn|error] [--metrics-port N]
-//         [--status-period-ms N] [--<name> <value> ...service-specific]
+//         [--status-period-ms N] [--fault-drop FRACTION] [--fault-delay-ms N]
+//         [--fault-topics PREFIX,PREFIX] [--fault-seed N] [--<name> <value> ...service-specific]
 // Bad config: prints "error: <what>" on one line, returns 2. SIGINT/SIGTERM: clean stop, returns 0.
 int run_service_main(int argc, char** argv, const ServiceFactory& factory);
 

@@ -27,6 +27,12 @@ std::string known_robots(const core::TeamConfig& team) {
 
 }  // namespace
 
+transport::SocketOptions ServiceHost::publisher_options(const ServiceContext& ctx) const {
+  transport::SocketOptions options = ctx.socket_options();
+  options.faults = options_.publisher_faults;
+  return options;
+}
+
 ServiceHost::ServiceHost(core::TeamConfig team, HostOptions options)
     : team_(std::move(team)), options_(std::move(options)) {
   if (options_.compose) team_.transport.scheme = "inproc";
@@ -82,7 +88,7 @@ void ServiceHost::start() {
       try {
         ctx.publisher_ = std::make_unique<transport::Publisher>(
             transport_, ctx.identity_,
-            core::bind_endpoint(team_, ctx.robot_id(), ctx.kind(), core::SocketRole::kPublish), ctx.socket_options(),
+            core::bind_endpoint(team_, ctx.robot_id(), ctx.kind(), core::SocketRole::kPublish), publisher_options(ctx),
             &ctx.accounting_);
         ctx.loop_.add(*ctx.publisher_);
         entry.service->setup(ctx);

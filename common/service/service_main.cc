@@ -3,6 +3,7 @@
 // thread with sigtimedwait, so no handler ever runs inside ZeroMQ or protobuf code.
 #include <signal.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <iostream>
 #include <optional>
@@ -22,12 +23,14 @@ struct CommandLine {
   std::string log_level = "info";
   std::optional<int> metrics_port;
   int status_period_ms = 1000;
+  transport::FaultInjection faults;
   std::map<std::string, std::string> arguments;
 };
 
 constexpr const char* kUsage =
     "usage: %s --config TEAM.yaml --robot ID [--log-level debug|info|warn|error] [--metrics-port N|-1] "
-    "[--status-period-ms N] [--<option> <value> ...]";
+    "[--status-period-ms N] [--fault-drop F] [--fault-delay-ms N] [--fault-topics P,P] [--fault-seed N] "
+    "[--<option> <value> ...]";
 
 // Throws std::invalid_argument with a one-line message.
 CommandLine parse(int argc, char** argv, bool many_robots) {
@@ -62,6 +65,25 @@ CommandLine parse(int argc, char** argv, bool many_robots) {
     } else if (flag == "--status-period-ms") {
       cl.status_period_ms = to_int("--status-period-ms");
       if (cl.status_period_ms <= 0) throw std::invalid_argument("--status-period-ms must be > 0");
+    } else if (flag == "--fault-drop") {
+      try {
+        cl.faults.drop_fraction = std::stod(value);
+      } catch (const std::exception&) {
+        cl.faults.drop_fraction = -1.0;
+      }
+      if (!(cl.faults.drop_fraction >= 0.0 && cl.faults.drop_fraction <= 1.0))
+        throw std::invalid_argument("--fault-drop expects a fraction in [0, 1], got '" + value + "'");
+    } else if (flag == "--fault-delay-ms") {
+      cl.faults.delay = std::chrono::milliseconds(to_int("--fault-delay-ms"));
+      if (cl.faults.delay.count() < 0) throw std::invalid_argument("--fault-delay-ms must be >= 0");
+    } else if (flag == "--fault-topics") {
+      for (size_t start = 0; start <= value.size();) {
+        const size_t comma = std::min(value.find(',', start), value.size());
+        if (comma > start) cl.faults.topic_prefixes.push_back(value.substr(start, comma - start));
+        start = comma + 1;
+      }
+    } else if (flag == "--fault-seed") {
+      cl.faults.seed = static_cast<uint64_t>(to_int("--fault-seed"));
     } else {
       cl.arguments[flag.substr(2)] = value;
     }
@@ -101,6 +123,7 @@ int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, boo
     options.status_period = std::chrono::milliseconds(cl.status_period_ms);
     options.compose = compose;
     options.arguments = cl.arguments;
+    options.publisher_faults = cl.faults;
     host = std::make_unique<ServiceHost>(core::load_team_config(cl.config), options);
     for (const auto& robot : cl.robots)
       for (const auto& factory : factories) host->add(factory(), robot);

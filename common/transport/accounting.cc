@@ -8,7 +8,7 @@ namespace hexplore::transport {
 
 std::string_view drop_reason_name(DropReason reason) {
   static constexpr std::array<std::string_view, kDropReasonCount> kNames = {
-      "malformed", "wrong_version", "wrong_type", "oversize", "fault_injected", "timeout", "send_failed"};
+      "malformed", "wrong_version", "wrong_type", "oversize", "fault_injected", "timeout", "send_failed", "handler_error"};
   return kNames[static_cast<size_t>(reason)];
 }
 

@@ -23,8 +23,9 @@ enum class DropReason {
   kFaultInjected = 4,  // dropped on purpose by FaultInjection
   kTimeout = 5,        // a request got no reply in time
   kSendFailed = 6,     // ZeroMQ refused the message (would block at the high-water mark)
+  kHandlerError = 7,   // the receiving handler threw; the message is counted as lost
 };
-inline constexpr int kDropReasonCount = 7;
+inline constexpr int kDropReasonCount = 8;
 std::string_view drop_reason_name(DropReason reason);
 
 // Peer label used for messages sent on a PUB socket (every subscriber gets them).

@@ -90,7 +90,13 @@ void Subscriber::handle(std::vector<zmq::message_t>& frames) {
   for (Handler& h : s.handlers) {
     if (!topics::matches(h.prefix, topic) || h.type != s.header.payload_type()) continue;
     type_matched = true;
-    if (!h.dispatch(topic, s.header, frames[2].data(), frames[2].size())) parse_failed = true;
+    try {
+      if (!h.dispatch(topic, s.header, frames[2].data(), frames[2].size())) parse_failed = true;
+    } catch (const std::exception& e) {
+      // A handler bug or a message it cannot use must not take the service down.
+      drop(s.accounting, topic, DropReason::kHandlerError, std::string("handler threw: ") + e.what());
+      return;
+    }
   }
   if (!type_matched) {
     drop(s.accounting, topic, DropReason::kWrongType, "payload type '" + s.header.payload_type().substr(0, 80) +

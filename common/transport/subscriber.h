@@ -43,7 +43,8 @@ class Subscriber : public Pollable {
 
   // Calls `handler` for every message whose topic starts with `topic_prefix` and whose
   // header says payload type M. Several handlers may share a prefix; each message goes to
-  // every handler whose prefix matches. Throws std::invalid_argument on a malformed prefix.
+  // every handler whose prefix matches. A handler that throws std::exception has the message
+  // counted as handler_error (the loop goes on). Throws std::invalid_argument on a malformed prefix.
   template <typename M>
   void on(std::string topic_prefix, std::function<void(const Received<M>&)> handler) {
     add_handler(std::move(topic_prefix), type_name<M>(),

@@ -1,5 +1,8 @@
 // The EchoService as its own process, through run_service_main:
 //   echo_service --config TEAM.yaml --robot ID [--kind sim|mapping|...] [base flags]
+// or composed (hlmap and planning echo services for every --robot, inproc), through
+// run_composition_main:
+//   echo_service --composed yes --config TEAM.yaml --robot A --robot B [base flags]
 #include <cstring>
 #include <iostream>
 
@@ -9,6 +12,12 @@ int main(int argc, char** argv) {
   using namespace hexplore;
   core::ServiceKind kind = core::ServiceKind::kMapping;
   for (int i = 1; i + 1 < argc; ++i) {
+    if (std::strcmp(argv[i], "--composed") == 0 && std::strcmp(argv[i + 1], "yes") == 0) {
+      return service::run_composition_main(
+          argc, argv,
+          {[] { return std::make_unique<testing::EchoService>(core::ServiceKind::kHlmap); },
+           [] { return std::make_unique<testing::EchoService>(core::ServiceKind::kPlanning); }});
+    }
     if (std::strcmp(argv[i], "--kind") != 0) continue;
     const auto parsed = core::service_from_name(argv[i + 1]);
     if (!parsed) {

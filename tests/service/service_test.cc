@@ -7,6 +7,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <thread>
 
 #include "common/core/config_error.h"
 #include "common/service/service.h"
@@ -172,6 +173,35 @@ TEST(ServiceHost, ComposesServicesOverInproc) {
   host.stop();
   host.wait();
   EXPECT_TRUE(host.finished());
+}
+
+TEST(ServiceMain, ComposedProcessWithFaultInjection) {
+  const std::string path = write_team("composed_main");
+  ChildProcess child({ECHO_SERVICE_PATH, "--composed", "yes", "--config", path, "--robot", "a", "--robot", "b",
+                      "--metrics-port", "-1", "--fault-drop", "0.5", "--fault-topics", "team/echo", "--fault-seed", "3"});
+  const auto metrics_line = child.wait_for_line("serving /metrics on port ", 10s);
+  ASSERT_TRUE(metrics_line) << child.output();
+  const std::string url = "http://127.0.0.1:" + metrics_line->substr(metrics_line->rfind(' ') + 1) + "/metrics";
+  const std::string file = ::testing::TempDir() + "/composed_metrics_" + std::to_string(getpid());
+  const std::string received = "hexplore_transport_received_messages_total{peer=\"b\",robot=\"a\",service=\"hlmap\",topic=\"team/echo\"}";
+  const std::string dropped = "hexplore_transport_dropped_total{reason=\"fault_injected\",robot=\"b\",service=\"planning\",topic=\"team/echo\"}";
+  std::string body;
+  for (int i = 0; i < 100; ++i) {  // the services publish every 20 ms; poll until both lines exist
+    ASSERT_EQ(std::system(("curl -s -f -m 5 -o '" + file + "' " + url).c_str()), 0);
+    std::stringstream text;
+    text << std::ifstream(file).rdbuf();
+    body = text.str();
+    if (body.find(received) != std::string::npos && body.find(dropped) != std::string::npos) break;
+    std::this_thread::sleep_for(50ms);
+  }
+  EXPECT_NE(body.find(received), std::string::npos) << body;
+  EXPECT_NE(body.find(dropped), std::string::npos) << body;
+  child.signal(SIGTERM);
+  EXPECT_EQ(child.wait_exit(10s), 0);
+  const std::string& out = child.output();
+  size_t shutdowns = 0;
+  for (size_t at = out.find("shutdown "); at != std::string::npos; at = out.find("shutdown ", at + 1)) ++shutdowns;
+  EXPECT_EQ(shutdowns, 4u) << out;
 }
 
 class FailingService : public Service {

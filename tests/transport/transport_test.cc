@@ -177,6 +177,28 @@ TEST(Transport, BadFramesAreCountedAndDroppedWhileValidTrafficContinues) {
   EXPECT_EQ(acc.dropped(DropReason::kWrongType), 1u);
 }
 
+TEST(Transport, AThrowingHandlerIsCountedAndTheLoopGoesOn) {
+  Context ctx;
+  Accounting acc("r2", "test");
+  Subscriber sub(ctx, {}, &acc);
+  sub.connect("inproc://throwing");
+  Publisher pub(ctx, kR1, "inproc://throwing");
+  std::vector<uint64_t> seen;
+  sub.on<v1::TestPayload>("team/", [&](const Received<v1::TestPayload>& m) {
+    if (m.message.counter() == 1) throw std::out_of_range("bad index");
+    seen.push_back(m.message.counter());
+  });
+  EventLoop loop;
+  loop.add(sub);
+  handshake(pub, loop, "team/hello", [&] { return !seen.empty(); });
+  seen.clear();
+  pub.publish("team/map", payload(1));
+  pub.publish("team/map", payload(2));
+  ASSERT_TRUE(loop.run_until([&] { return !seen.empty(); }, 5s));
+  EXPECT_EQ(seen, (std::vector<uint64_t>{2}));
+  EXPECT_EQ(acc.dropped(DropReason::kHandlerError), 1u);
+}
+
 TEST(Transport, PublisherRefusesOversizeAndInvalidTopics) {
   Context ctx;
   Accounting acc("r1", "test");
