@@ -1,0 +1,89 @@
+// One planning round on a synthetic high-level map the size of the paper's multi-building
+// scene (about 1,550 m^2 of ground, three buildings, rubble) with 4 robots of 2 species
+// (2 x SLUGCAT, 2 x MR1000), stage by stage, for every registered planner. Single thread.
+// Usage: bench_planning_round [--rounds N] [--planner NAME]
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "common/core/team_config.h"
+#include "common/highlevel/supervoxel.h"
+#include "common/planning/planner_registry.h"
+#include "common/planning/synthetic_scene.h"
+
+using namespace hexplore;
+using namespace hexplore::planning;
+
+int main(int argc, char** argv) {
+  int rounds = 5;
+  std::string only;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--rounds") && i + 1 < argc) rounds = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--planner") && i + 1 < argc) only = argv[++i];
+    else {
+      std::fprintf(stderr, "usage: %s [--rounds N] [--planner NAME]\n", argv[0]);
+      return 2;
+    }
+  }
+  core::TeamConfig team;
+  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
+  team.robots = {{"slug1", "SLUGCAT", {1.5, 1.5, 0}, 0}, {"slug2", "SLUGCAT", {43.5, 33.5, 0}, 0},
+                 {"mr1", "MR1000", {2.5, 33.5, 0}, 0}, {"mr2", "MR1000", {30.5, 15.5, 0}, 0}};
+  PlannerContext ctx{capabilities_from(team), PlannerOptions::from(team.params)};
+
+  highlevel::HighLevelMap map(highlevel::species_levels(team));
+  map.apply(synthetic_scene(SyntheticSceneOptions{}));
+  int ground = 0, facade = 0, ise = 0;
+  for (const auto& [k, sv] : map.supervoxels()) {
+    ground += sv.ground();
+    facade += sv.facade();
+    ise += !sv.covered;
+  }
+  std::printf("map: %zu supervoxels (%d ground, %d facade, %d ISE), %zu graph vertices, %zu edges\n", map.size(), ground,
+              facade, ise, map.graph().vertex_count(), map.graph().edge_count());
+  std::printf("team: 2 x SLUGCAT (level 2, 10 m), 2 x MR1000 (level 1, 27 m); GA %d x %d generations, budget %.3f s\n",
+              ctx.options.ga_population, ctx.options.ga_max_generations, ctx.options.ga_time_budget_s);
+  std::printf("median of %d rounds (planning robot slug1; the graph's distance cache is cold each round)\n\n", rounds);
+  std::printf("%-11s %8s %8s %8s %8s %8s | %6s %8s %6s %9s %8s\n", "planner", "views", "cluster", "assign", "mnss",
+              "total", "views", "clusters", "gens", "fitness", "route");
+
+  const PlannerRegistry registry = PlannerRegistry::builtin();
+  for (const auto& name : registry.names()) {
+    if (!only.empty() && name != only) continue;
+    auto planner = registry.create(name);
+    planner->configure(ctx);
+    planner->activate();
+    std::vector<StageTimes> times;
+    PlanResult last;
+    for (int r = 0; r < rounds; ++r) {
+      highlevel::HighLevelMap fresh(highlevel::species_levels(team));  // cold distance cache
+      fresh.apply(synthetic_scene(SyntheticSceneOptions{}));
+      PlanRequest req;
+      req.map = &fresh;
+      for (const auto& rc : team.robots) req.robots.push_back({rc.id, *team.species_index(rc.species), rc.start_position_m});
+      req.self = 0;
+      req.round = uint64_t(r);
+      last = planner->plan(req);
+      times.push_back(last.times);
+    }
+    auto median = [&](double StageTimes::*f) {
+      std::vector<double> v;
+      for (const auto& t : times) v.push_back(t.*f);
+      std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+      return 1e3 * v[v.size() / 2];
+    };
+    std::printf("%-11s %6.1fms %6.1fms %6.1fms %6.1fms %6.1fms | %6d %8d %6d %9.1f %8zu\n", name.c_str(),
+                median(&StageTimes::views_s), median(&StageTimes::clustering_s), median(&StageTimes::assignment_s),
+                median(&StageTimes::mnss_s), median(&StageTimes::total_s), last.views, last.clusters, last.ga_generations,
+                last.fitness, last.robots[0].route.size());
+    if (!only.empty())
+      std::printf("  view stage: %d facade targets, %d facade views, %d unobservable, %d composite ground, %d ground views, "
+                  "%lld rays\n",
+                  last.view_stats.facade_targets, last.view_stats.facade_views, last.view_stats.unobservable_facades,
+                  last.view_stats.composite_ground, last.view_stats.ground_views, (long long)last.view_stats.rays_cast);
+  }
+  return 0;
+}

@@ -1,0 +1,62 @@
+#pragma once
+// What the planner needs to know about the team: per species its capability levels
+// (a_zeta, a_varsigma), observation range and speeds, and per robot its species. Built from
+// core::TeamConfig; the no-hetero ablation flattens it to identical robots.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace hexplore::core {
+struct TeamConfig;
+struct AlgorithmParams;
+}
+
+namespace hexplore::planning {
+
+struct SpeciesCapability {
+  std::string name;
+  int traversal_level = 1;             // a_zeta(k)
+  int observation_level = 1;           // a_varsigma(k)
+  double observation_range_m = 10.0;   // varsigma_k
+  double speed_mps = 0.5;              // vartheta_zeta(k)
+  double observation_speed = 1.0;      // vartheta_varsigma(k), facade views per second
+};
+
+struct TeamCapabilities {
+  std::vector<SpeciesCapability> species;   // index = team species index
+  std::vector<std::string> robot_ids;       // index = team robot index
+  std::vector<int> robot_species;
+
+  double max_observation_range() const;
+  // Every species reduced to the weakest traversal level and shortest observation range of
+  // the team (paper ablation NoHetero); speeds are kept.
+  TeamCapabilities homogeneous() const;
+};
+
+TeamCapabilities capabilities_from(const core::TeamConfig& team);
+
+// The planner's tunables: the paper's parameters plus implementation choices.
+struct PlannerOptions {
+  double gamma_th_deg = 45.0;   // incidence-angle threshold
+  double theta_l_deg = -45.0;   // observation-angle bounds (elevation of the target seen from the view)
+  double theta_u_deg = 45.0;
+  double beta_i = 0.5, beta_l = 0.5;            // Vis weights
+  double beta_zeta = 10.0, beta_varsigma = 1.0; // capability score a(k)
+  double beta_e = 0.5, beta_c = 1.0, beta_m = 1.5, beta_d = 3.0;
+  double eta_s_m = 1.0;         // supervoxel seed interval (ray-cast cell size)
+  double eta_r_m = 5.0;         // clustering radius and MNSS neighbourhood
+  double sensor_height_m = 0.5; // view (sensor) height above its ground supervoxel centre
+  double ground_cover_radius_m = 1.5;  // a view covers ground-ISE supervoxels this close
+  int ga_population = 64;
+  int ga_max_generations = 400;
+  double ga_time_budget_s = 0.05;
+  uint64_t seed = 1;
+  int mnss_samples = 16;        // view sets sampled per cluster
+  double min_view_separation_m = 1.0;  // MNSS rejects views this close to a chosen one
+
+  static PlannerOptions from(const core::AlgorithmParams& params);
+};
+
+}  // namespace hexplore::planning

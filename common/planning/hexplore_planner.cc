@@ -1,0 +1,292 @@
+#include "common/planning/hexplore_planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "common/core/clock.h"
+#include "common/planning/clustering.h"
+#include "common/planning/cost_model.h"
+#include "common/planning/ga_solver.h"
+#include "common/planning/labels.h"
+#include "common/planning/mnss.h"
+#include "common/planning/rng.h"
+
+namespace hexplore::planning {
+namespace {
+
+double seconds_since(int64_t t0) { return core::ns_to_s(core::monotonic_ns() - t0); }
+
+// A seed every robot derives alike from shared state (the option seed and the cluster ids),
+// so identical maps give identical GA runs whatever each robot's local round counter says.
+uint64_t shared_seed(uint64_t base, const std::vector<uint64_t>& ids) {
+  uint64_t s = mix_seed(base, ids.size());
+  for (uint64_t id : ids) s = mix_seed(s, id);
+  return s;
+}
+
+// The reference assignment mapped onto this round's clusters: each robot keeps its reference
+// clusters that still exist (in reference order); the rest go, in id order, to the eligible
+// robot whose route grows least. Gives the GA a starting point that agrees with the team.
+std::vector<Route> reference_seed(const MtspProblem& p, const std::vector<uint64_t>& city_ids,
+                                  const ReferenceSolution& ref, const std::vector<RobotState>& robots) {
+  std::unordered_map<uint64_t, int> city_of;
+  for (size_t c = 0; c < city_ids.size(); ++c) city_of[city_ids[c]] = int(c);
+  std::vector<Route> routes(robots.size());
+  std::vector<char> placed(city_ids.size(), 0);
+  for (size_t r = 0; r < robots.size(); ++r) {
+    const ReferenceRoute* rr = ref.route_of(robots[r].id);
+    if (!rr) continue;
+    for (uint64_t id : rr->cluster_ids) {
+      const auto it = city_of.find(id);
+      if (it == city_of.end() || placed[size_t(it->second)] || !p.eligible(int(r), it->second)) continue;
+      routes[r].push_back(it->second);
+      placed[size_t(it->second)] = 1;
+    }
+  }
+  for (size_t c = 0; c < city_ids.size(); ++c) {
+    if (placed[c]) continue;
+    int best = -1;
+    double best_cost = kInfinity;
+    for (size_t r = 0; r < robots.size(); ++r) {
+      if (!p.eligible(int(r), int(c))) continue;
+      const int s = p.robots[r].species;
+      const int last = routes[r].empty() ? p.depot(int(r)) : routes[r].back();
+      const double add = p.travel_cost(s, last, int(c)) + p.execution_cost(s, int(c));
+      if (add < best_cost) best_cost = add, best = int(r);
+    }
+    if (best >= 0) routes[size_t(best)].push_back(int(c));
+  }
+  return routes;
+}
+
+}  // namespace
+
+ReferenceSolution PlanResult::as_reference(const std::string& source_robot) const {
+  ReferenceSolution s;
+  s.source_robot = source_robot;
+  s.round = round;
+  for (const auto& r : robots) s.routes.push_back({r.robot_id, r.cluster_ids, r.cluster_centers, r.route_length_m});
+  return s;
+}
+
+std::string HexplorePlanner::name() const {
+  switch (ablation_) {
+    case Ablation::kNone: return "hexplore";
+    case Ablation::kNoHetero: return "no-hetero";
+    case Ablation::kNoCluster: return "no-cluster";
+    case Ablation::kNoMnss: return "no-mnss";
+    case Ablation::kNoAssign: return "no-assign";
+  }
+  return "hexplore";
+}
+
+void HexplorePlanner::configure(const PlannerContext& context) {
+  if (context.team.species.empty()) throw std::invalid_argument(name() + ": team has no species");
+  context_ = context;
+  configured_ = true;
+}
+
+ExecutablePlan executable_path(const highlevel::TopologyGraph& graph, const Eigen::Vector3d& from, int species,
+                               const TaskView& goal) {
+  ExecutablePlan out;
+  out.goal = goal;
+  const auto start = graph.nearest(from, species);
+  if (!start) return out;
+  const auto keys = graph.path(*start, goal.ground_key, species);
+  if (keys.empty()) return out;
+  for (uint64_t k : keys)
+    if (auto p = graph.position(k)) out.waypoints.push_back(*p);
+  out.valid = true;
+  return out;
+}
+
+PlanResult HexplorePlanner::plan(const PlanRequest& req) {
+  if (!configured_) throw std::logic_error(name() + ": plan() before configure()");
+  if (!req.map) throw std::invalid_argument(name() + ": no map in the request");
+  if (req.self < 0 || size_t(req.self) >= req.robots.size())
+    throw std::invalid_argument(name() + ": self index " + std::to_string(req.self) + " outside the team");
+  for (const auto& r : req.robots)
+    if (r.species < 0 || size_t(r.species) >= context_.team.species.size())
+      throw std::invalid_argument(name() + ": robot '" + r.id + "' has unknown species index " + std::to_string(r.species));
+  const TeamCapabilities team = ablation_ == Ablation::kNoHetero ? context_.team.homogeneous() : context_.team;
+  if (ablation_ == Ablation::kNoAssign) return plan_voronoi(req, team);
+
+  const PlannerOptions& o = context_.options;
+  const int64_t t0 = core::monotonic_ns();
+  PlanResult out;
+  out.round = req.round;
+  out.planner = name();
+
+  // Task views.
+  const MapContext ctx(*req.map, o);
+  const std::vector<TaskView> views = generate_task_views(ctx, team, o, &out.view_stats);
+  out.views = int(views.size());
+  const int64_t t1 = core::monotonic_ns();
+  out.times.views_s = core::ns_to_s(t1 - t0);
+
+  // Clustering.
+  const std::vector<TaskCluster> clusters =
+      ablation_ == Ablation::kNoCluster ? singleton_clusters(views) : cluster_views(views, o.eta_r_m);
+  out.clusters = int(clusters.size());
+  const int64_t t2 = core::monotonic_ns();
+  out.times.clustering_s = core::ns_to_s(t2 - t1);
+
+  // Assignment.
+  const highlevel::TopologyGraph& graph = req.map->graph();
+  const AssignmentInstance inst = build_assignment(graph, views, clusters, team, req.robots);
+  out.dropped_clusters = int(inst.dropped.size());
+  std::vector<uint64_t> city_ids;
+  for (int c : inst.city_cluster) city_ids.push_back(clusters[size_t(c)].id);
+
+  std::optional<ReferenceSolution> ref;
+  if (auto i = select_reference(req.shared)) ref = req.shared[*i];
+  std::vector<std::vector<Eigen::Vector3d>> ref_lines(req.robots.size());
+  if (ref)
+    for (size_t r = 0; r < req.robots.size(); ++r)
+      if (const ReferenceRoute* rr = ref->route_of(req.robots[r].id)) ref_lines[r] = rr->centers;
+
+  std::vector<Route> routes(req.robots.size());
+  if (inst.problem.num_cities > 0) {
+    const FitnessModel model(inst.problem, FitnessWeights{o.beta_c, o.beta_m, o.beta_d, o.beta_e}, ref_lines);
+    GaOptions ga;
+    ga.population = o.ga_population;
+    ga.max_generations = o.ga_max_generations;
+    ga.time_budget_s = o.ga_time_budget_s;
+    ga.seed = shared_seed(o.seed, city_ids);
+    ga.local_search = LocalSearchMode::kMemetic;
+    if (ref) ga.seeds.push_back(reference_seed(inst.problem, city_ids, *ref, req.robots));
+    const GaResult result = solve_ga(model, ga);
+    routes = result.routes;
+    out.fitness = result.breakdown.fitness;
+    out.ga_generations = result.generations;
+  }
+  const int64_t t3 = core::monotonic_ns();
+  out.times.assignment_s = core::ns_to_s(t3 - t2);
+
+  // Team solution: cluster sequences, lengths and costs.
+  std::unordered_map<uint64_t, std::string> ref_owner;
+  if (ref)
+    for (const auto& rr : ref->routes)
+      for (uint64_t id : rr.cluster_ids) ref_owner[id] = rr.robot_id;
+  int agree = 0, compared = 0;
+  out.robots.resize(req.robots.size());
+  for (size_t r = 0; r < req.robots.size(); ++r) {
+    RobotPlan& plan = out.robots[r];
+    plan.robot_id = req.robots[r].id;
+    const int k = req.robots[r].species;
+    int prev = inst.problem.depot(int(r));
+    for (int c : routes[r]) {
+      const TaskCluster& cl = clusters[size_t(inst.city_cluster[size_t(c)])];
+      plan.cluster_ids.push_back(cl.id);
+      plan.cluster_centers.push_back(cl.center);
+      const double w = inst.problem.travel_cost(k, prev, c);
+      plan.route_length_m += w * inst.speed[size_t(k)];
+      plan.cost_s += w + inst.problem.execution_cost(k, c);
+      prev = c;
+      if (const auto it = ref_owner.find(cl.id); it != ref_owner.end()) {
+        ++compared;
+        agree += it->second == plan.robot_id ? 1 : 0;
+      }
+    }
+  }
+  if (compared > 0) out.agreement = double(agree) / compared;
+
+  // Exploration tour of the planning robot.
+  const size_t self = size_t(req.self);
+  const RobotState& me = req.robots[self];
+  const SpeciesCapability& my_species = team.species[size_t(me.species)];
+  Rng rng(shared_seed(mix_seed(o.seed, 0x4d4e5353), city_ids));
+  std::vector<TaskView>& tour = out.robots[self].route;
+  const Route& mine = routes[self];
+  for (size_t i = 0; i < mine.size(); ++i) {
+    const TaskCluster& cl = clusters[size_t(inst.city_cluster[size_t(mine[i])])];
+    const Eigen::Vector3d start = i == 0 ? me.position : clusters[size_t(inst.city_cluster[size_t(mine[i - 1])])].center;
+    std::optional<Eigen::Vector3d> end;
+    if (i + 1 < mine.size()) end = clusters[size_t(inst.city_cluster[size_t(mine[i + 1])])].center;
+    std::vector<TaskView> part;
+    if (ablation_ == Ablation::kNoCluster) {
+      part = {views[size_t(cl.views.front())]};
+    } else if (ablation_ == Ablation::kNoMnss) {
+      std::vector<TaskView> all;
+      for (int v : cl.views) all.push_back(views[size_t(v)]);
+      part = order_views(std::move(all), start, end);
+    } else {
+      part = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, my_species, start, end, o, rng);
+    }
+    tour.insert(tour.end(), part.begin(), part.end());
+  }
+  const int64_t t4 = core::monotonic_ns();
+  out.times.mnss_s = core::ns_to_s(t4 - t3);
+  if (!tour.empty()) out.path = executable_path(graph, me.position, me.species, tour.front());
+  out.times.total_s = seconds_since(t0);
+  return out;
+}
+
+PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapabilities& team) {
+  const PlannerOptions& o = context_.options;
+  const int64_t t0 = core::monotonic_ns();
+  PlanResult out;
+  out.round = req.round;
+  out.planner = name();
+  const MapContext ctx(*req.map, o);
+  const std::vector<TaskView> views = generate_task_views(ctx, team, o, &out.view_stats);
+  out.views = int(views.size());
+  const int64_t t1 = core::monotonic_ns();
+  out.times.views_s = core::ns_to_s(t1 - t0);
+
+  // Dynamic Voronoi partition: each view goes to the nearest (graph distance) robot whose
+  // species may take it; ties to the lower robot index.
+  const highlevel::TopologyGraph& graph = req.map->graph();
+  const size_t R = req.robots.size();
+  std::vector<std::optional<uint64_t>> vertex(R);
+  for (size_t r = 0; r < R; ++r) vertex[r] = graph.nearest(req.robots[r].position, req.robots[r].species);
+  std::vector<std::vector<int>> owned(R);
+  for (size_t v = 0; v < views.size(); ++v) {
+    int best = -1;
+    double bd = kInfinity;
+    for (size_t r = 0; r < R; ++r) {
+      const int k = req.robots[r].species;
+      if (!vertex[r] || (views[v].label != kPublic && views[v].label != k)) continue;
+      const double d = graph.dist(*vertex[r], views[v].ground_key, k);
+      if (d < bd) bd = d, best = int(r);
+    }
+    if (best >= 0) owned[size_t(best)].push_back(int(v));
+    else ++out.dropped_clusters;
+  }
+  const int64_t t2 = core::monotonic_ns();
+  out.times.assignment_s = core::ns_to_s(t2 - t1);
+
+  out.robots.resize(R);
+  Rng rng(mix_seed(o.seed, views.size()));
+  for (size_t r = 0; r < R; ++r) {
+    RobotPlan& plan = out.robots[r];
+    plan.robot_id = req.robots[r].id;
+    std::vector<TaskView> mine;
+    for (int v : owned[r]) mine.push_back(views[size_t(v)]);
+    mine = order_views(std::move(mine), req.robots[r].position, std::nullopt);
+    for (const auto& v : mine) {
+      plan.cluster_ids.push_back(v.key);
+      plan.cluster_centers.push_back(v.position);
+    }
+    plan.route_length_m = tour_length(mine, req.robots[r].position, std::nullopt);
+    plan.cost_s = plan.route_length_m / std::max(1e-6, team.species[size_t(req.robots[r].species)].speed_mps);
+    if (int(r) == req.self && !owned[r].empty()) {
+      std::vector<Eigen::Vector3d> around;
+      for (int v : owned[r]) around.push_back(views[size_t(v)].position);
+      plan.route = mnss_tour(ctx, views, owned[r], around, 0.5 * o.eta_r_m, team.species[size_t(req.robots[r].species)],
+                             req.robots[r].position, std::nullopt, o, rng);
+    }
+  }
+  out.clusters = int(views.size()) - out.dropped_clusters;
+  out.times.mnss_s = seconds_since(t2);
+  const RobotPlan& me = out.robots[size_t(req.self)];
+  if (!me.route.empty())
+    out.path = executable_path(graph, req.robots[size_t(req.self)].position, req.robots[size_t(req.self)].species,
+                               me.route.front());
+  out.times.total_s = seconds_since(t0);
+  return out;
+}
+
+}  // namespace hexplore::planning

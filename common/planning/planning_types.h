@@ -1,0 +1,73 @@
+#pragma once
+// Inputs and outputs of one planning round, shared by every planner.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "common/highlevel/high_level_map.h"
+#include "common/planning/reference.h"
+#include "common/planning/task_views.h"
+
+namespace hexplore::planning {
+
+struct RobotState {
+  std::string id;
+  int species = 0;  // team species index
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+};
+
+struct PlanRequest {
+  const highlevel::HighLevelMap* map = nullptr;
+  std::vector<RobotState> robots;              // the whole team
+  int self = 0;                                // index of the planning robot in `robots`
+  std::vector<ReferenceSolution> shared;       // teammates' (and own) previous solutions
+  uint64_t round = 0;
+};
+
+// One robot's part of the team solution.
+struct RobotPlan {
+  std::string robot_id;
+  std::vector<uint64_t> cluster_ids;
+  std::vector<Eigen::Vector3d> cluster_centers;
+  double route_length_m = 0.0;  // graph length from the robot through its clusters
+  double cost_s = 0.0;          // cost(V_r) of the paper (transition + execution time)
+  std::vector<TaskView> route;  // exploration route (only filled for the planning robot)
+};
+
+struct ExecutablePlan {
+  bool valid = false;
+  std::vector<Eigen::Vector3d> waypoints;  // topology-graph vertices from the robot to the goal
+  TaskView goal;
+};
+
+struct StageTimes {
+  double views_s = 0.0;
+  double clustering_s = 0.0;
+  double assignment_s = 0.0;
+  double mnss_s = 0.0;
+  double total_s = 0.0;
+};
+
+struct PlanResult {
+  uint64_t round = 0;
+  std::string planner;
+  std::vector<RobotPlan> robots;  // same order as PlanRequest::robots
+  ExecutablePlan path;            // for the planning robot
+  double fitness = 0.0;
+  int ga_generations = 0;
+  int views = 0;
+  int clusters = 0;
+  int dropped_clusters = 0;       // clusters no robot can reach or serve
+  std::optional<double> agreement;  // share of clusters assigned as in the reference
+  StageTimes times;
+  ViewGenerationStats view_stats;
+
+  // This round as a shareable reference solution.
+  ReferenceSolution as_reference(const std::string& source_robot) const;
+};
+
+}  // namespace hexplore::planning

@@ -1,0 +1,85 @@
+#include "common/planning/synthetic_scene.h"
+
+#include <set>
+
+#include "common/planning/rng.h"
+
+namespace hexplore::planning {
+
+highlevel::MapUpdate synthetic_scene(const SyntheticSceneOptions& o) {
+  using highlevel::Supervoxel;
+  using highlevel::SurfaceClass;
+  highlevel::MapUpdate up;
+  up.full_snapshot = true;
+  up.version = 1;
+  Rng rng(o.seed);
+  const double c = o.cell_m;
+  // Wall cells (no ground there unless a door) and their outward normals.
+  std::set<std::pair<int, int>> wall, door;
+  for (const auto& b : o.buildings) {
+    for (int x = b.x0; x <= b.x1; ++x)
+      for (int y = b.y0; y <= b.y1; ++y)
+        if (x == b.x0 || x == b.x1 || y == b.y0 || y == b.y1) wall.insert({x, y});
+    door.insert({(b.x0 + b.x1) / 2, b.y0});  // one door in the south wall, one in the north
+    door.insert({(b.x0 + b.x1) / 2 + 1, b.y1});
+  }
+  auto ground_at = [&](int x, int y) { return !wall.count({x, y}) || door.count({x, y}); };
+  auto in_rubble = [&](int x, int y) {
+    for (const auto& r : o.rubble)
+      if (x >= r[0] && x <= r[2] && y >= r[1] && y <= r[3]) return true;
+    return false;
+  };
+  for (int x = 0; x < o.width_cells; ++x)
+    for (int y = 0; y < o.depth_cells; ++y) {
+      if (!ground_at(x, y)) continue;
+      Supervoxel sv;
+      sv.center = {(x + 0.5) * c, (y + 0.5) * c, 0.1};
+      sv.normal = Eigen::Vector3d::UnitZ();
+      sv.surface = SurfaceClass::kGround;
+      sv.key = highlevel::supervoxel_key(core::cell_of(sv.center, c), sv.surface);
+      sv.traversal_requirement = in_rubble(x, y) ? 2 : 1;
+      sv.covered = rng.uniform() < o.covered_fraction;
+      sv.voxel_count = 40;
+      up.upserts.push_back(sv);
+    }
+  for (const auto& b : o.buildings)
+    for (int x = b.x0; x <= b.x1; ++x)
+      for (int y = b.y0; y <= b.y1; ++y) {
+        if (!wall.count({x, y})) continue;
+        Eigen::Vector3d n = Eigen::Vector3d::Zero();
+        if (x == b.x0) n.x() -= 1;
+        if (x == b.x1) n.x() += 1;
+        if (y == b.y0) n.y() -= 1;
+        if (y == b.y1) n.y() += 1;
+        n.normalize();
+        for (int z = door.count({x, y}) ? 2 : 0; z < b.floors_m; ++z) {
+          Supervoxel sv;
+          sv.center = {(x + 0.5) * c, (y + 0.5) * c, (z + 0.5) * c};
+          sv.normal = n;
+          sv.surface = SurfaceClass::kFacade;
+          sv.key = highlevel::supervoxel_key(core::cell_of(sv.center, c), sv.surface);
+          sv.covered = rng.uniform() < o.covered_fraction;
+          sv.voxel_count = 30;
+          up.upserts.push_back(sv);
+        }
+      }
+  for (int x = 0; x < o.width_cells; ++x)
+    for (int y = 0; y < o.depth_cells; ++y) {
+      if (!ground_at(x, y)) continue;
+      const auto key = [&](int gx, int gy) {
+        return highlevel::supervoxel_key(core::cell_of(Eigen::Vector3d((gx + 0.5) * c, (gy + 0.5) * c, 0.1), c),
+                                         SurfaceClass::kGround);
+      };
+      const int d[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+      for (const auto& dd : d) {
+        const int nx = x + dd[0], ny = y + dd[1];
+        if (nx < 0 || ny < 0 || nx >= o.width_cells || ny >= o.depth_cells || !ground_at(nx, ny)) continue;
+        // Diagonals must not cut a wall corner.
+        if (dd[0] != 0 && dd[1] != 0 && (!ground_at(x + dd[0], y) || !ground_at(x, y + dd[1]))) continue;
+        up.edge_upserts.push_back(highlevel::EdgeKey::of(key(x, y), key(nx, ny)));
+      }
+    }
+  return up;
+}
+
+}  // namespace hexplore::planning

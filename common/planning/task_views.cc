@@ -1,0 +1,121 @@
+#include "common/planning/task_views.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+#include "common/planning/labels.h"
+
+namespace hexplore::planning {
+
+bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target,
+                      const std::vector<const highlevel::Supervoxel*>& candidates, double range,
+                      const PlannerOptions& o, TaskView& view, int64_t* rays) {
+  struct Scored {
+    double score;
+    const highlevel::Supervoxel* ground;
+    ViewGeometry geometry;
+  };
+  std::vector<Scored> ok;
+  ok.reserve(candidates.size());
+  // Cheap rejections first, on cosines and squared distances (no trigonometry).
+  const double cos_gamma = std::cos(o.gamma_th_deg * M_PI / 180.0);
+  const double sin_lo = std::sin(o.theta_l_deg * M_PI / 180.0), sin_hi = std::sin(o.theta_u_deg * M_PI / 180.0);
+  const double tn = target.normal.norm();
+  const Eigen::Vector3d target_n = tn > 1e-9 ? Eigen::Vector3d(target.normal / tn) : Eigen::Vector3d::UnitZ();
+  for (const auto* g : candidates) {
+    const Eigen::Vector3d gn = g->normal.normalized();
+    const Eigen::Vector3d m = target.center - (g->center + gn * o.sensor_height_m);
+    const double d2 = m.squaredNorm();
+    if (d2 >= range * range || d2 < 1e-12) continue;
+    const double inv = 1.0 / std::sqrt(d2);
+    if (std::abs(m.dot(target_n)) * inv <= cos_gamma) continue;
+    const double s = m.dot(gn) * inv;
+    if (s < sin_lo || s > sin_hi) continue;
+    const Eigen::Vector3d sensor = g->center + gn * o.sensor_height_m;
+    const ViewGeometry geo = view_geometry(sensor, g->normal, target.center, target.normal);
+    if (!angles_ok(geo, o)) continue;
+    ok.push_back({visibility_score(geo, o), g, geo});
+  }
+  // Ray casts are the expensive part: try candidates best-first and stop at the first clear one.
+  std::sort(ok.begin(), ok.end(), [](const Scored& a, const Scored& b) {
+    return a.score != b.score ? a.score > b.score : a.ground->key < b.ground->key;
+  });
+  for (const auto& s : ok) {
+    if (rays) ++*rays;
+    const Eigen::Vector3d sensor = s.ground->center + s.ground->normal.normalized() * o.sensor_height_m;
+    if (!ctx.occlusion.clear(sensor, target.center)) continue;
+    view = TaskView{};
+    view.key = target.key;
+    view.ground_key = s.ground->key;
+    view.position = s.ground->center;
+    view.look_at = target.center;
+    view.facade = true;
+    view.targets = {target.key};
+    view.traversal_requirement = s.ground->traversal_requirement;
+    view.score = s.score;
+    return true;
+  }
+  return false;
+}
+
+std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapabilities& team,
+                                          const PlannerOptions& o, ViewGenerationStats* stats) {
+  ViewGenerationStats local;
+  ViewGenerationStats& st = stats ? *stats : local;
+  st = {};
+  const double range = team.max_observation_range();
+  std::vector<TaskView> views;
+  std::unordered_set<uint64_t> covered_ground;
+
+  for (const auto& [key, sv] : ctx.map.supervoxels()) {
+    if (!sv.facade() || sv.covered) continue;
+    ++st.facade_targets;
+    // Growing search radius: Vis <= 1 / (beta_l * distance), so once the best visible view
+    // within r scores at least what any view beyond r could, it is the best within range.
+    TaskView view;
+    bool found = false;
+    for (double r = 4.0;; r = std::min(range, 2.0 * r)) {
+      found = best_facade_view(ctx, sv, ctx.ground.within(sv.center, r, /*sorted=*/false), std::min(r, range), o, view,
+                               &st.rays_cast);
+      if (r >= range) break;
+      const double beyond = r - o.sensor_height_m;
+      if (found && beyond > 0 && view.score >= 1.0 / (o.beta_l * beyond)) break;
+    }
+    if (!found) {
+      ++st.unobservable_facades;
+      continue;
+    }
+    view.observation_requirement = observation_requirement((view.position - sv.center).norm(), team);
+    // Composite view: ground-ISE supervoxels next to where the robot stands are seen too.
+    for (const auto* g : ctx.ground.within(view.position, o.ground_cover_radius_m)) {
+      if (g->covered || covered_ground.count(g->key)) continue;
+      view.targets.push_back(g->key);
+      covered_ground.insert(g->key);
+      ++st.composite_ground;
+    }
+    view.label = task_label(view.observation_requirement, view.traversal_requirement, team, o.beta_zeta, o.beta_varsigma);
+    if (view.label == kUnassignable) continue;
+    views.push_back(std::move(view));
+    ++st.facade_views;
+  }
+  for (const auto& [key, sv] : ctx.map.supervoxels()) {
+    if (!sv.traversable() || sv.covered || covered_ground.count(key)) continue;
+    TaskView view;
+    view.key = key;
+    view.ground_key = key;
+    view.position = sv.center;
+    view.look_at = sv.center;
+    view.targets = {key};
+    view.traversal_requirement = sv.traversal_requirement;
+    view.observation_requirement = 1;
+    view.label = task_label(1, view.traversal_requirement, team, o.beta_zeta, o.beta_varsigma);
+    if (view.label == kUnassignable) continue;
+    views.push_back(std::move(view));
+    ++st.ground_views;
+  }
+  std::sort(views.begin(), views.end(), [](const TaskView& a, const TaskView& b) { return a.key < b.key; });
+  return views;
+}
+
+}  // namespace hexplore::planning

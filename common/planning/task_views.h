@@ -1,0 +1,61 @@
+#pragma once
+// Task-view generation (paper "Task-View Generation"): for every facade-ISE supervoxel the
+// best-scoring visible view from the traversable ground within the largest observation range,
+// with its traversal and observation requirements; facade views also cover nearby ground-ISE
+// supervoxels (composite views); the remaining traversable ground-ISE supervoxels get ground
+// views standing on them. Every view is labelled public / private (labels.h).
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "common/highlevel/high_level_map.h"
+#include "common/planning/capabilities.h"
+#include "common/planning/ground_index.h"
+#include "common/planning/visibility.h"
+
+namespace hexplore::planning {
+
+struct TaskView {
+  uint64_t key = 0;            // the ISE supervoxel the view was made for (ordering, cluster ids)
+  uint64_t ground_key = 0;     // ground supervoxel (topology vertex) the view stands on
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // p(xi) = p(ground supervoxel)
+  Eigen::Vector3d look_at = Eigen::Vector3d::Zero();   // target centre (facade views)
+  bool facade = false;         // in Xi_u (counts towards the observation time)
+  std::vector<uint64_t> targets;  // ISE supervoxels it observes: its own first, then composite ground ones
+  int traversal_requirement = 1;
+  int observation_requirement = 1;
+  double score = 0.0;          // Vis of the best view (facade views)
+  int label = -1;              // kPublic, species index, or kUnassignable
+};
+
+struct ViewGenerationStats {
+  int facade_targets = 0;
+  int facade_views = 0;
+  int unobservable_facades = 0;
+  int composite_ground = 0;
+  int ground_views = 0;
+  int64_t rays_cast = 0;
+};
+
+// The map-derived context shared by the planning stages of one round.
+struct MapContext {
+  const highlevel::HighLevelMap& map;
+  OcclusionGrid occlusion;
+  GroundIndex ground;
+  MapContext(const highlevel::HighLevelMap& m, const PlannerOptions& o)
+      : map(m), occlusion(m, o.eta_s_m), ground(m, std::max(2.0, o.eta_r_m)) {}
+};
+
+// Best visible view of one facade target from the given candidates; false when none sees it.
+// `range` limits the view distance (the largest observation range, or one species' range).
+bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target,
+                      const std::vector<const highlevel::Supervoxel*>& candidates, double range,
+                      const PlannerOptions& o, TaskView& view, int64_t* rays = nullptr);
+
+// All task views of the map, in ascending key order; unassignable views are dropped.
+std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapabilities& team,
+                                          const PlannerOptions& o, ViewGenerationStats* stats = nullptr);
+
+}  // namespace hexplore::planning

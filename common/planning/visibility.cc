@@ -1,0 +1,54 @@
+#include "common/planning/visibility.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hexplore::planning {
+namespace {
+constexpr double kDegToRad = M_PI / 180.0;
+}
+
+OcclusionGrid::OcclusionGrid(const highlevel::HighLevelMap& map, double cell_m) : cell_m_(cell_m) {
+  for (const auto& [key, sv] : map.supervoxels())
+    if (sv.facade()) cells_.insert(core::seed_key(core::cell_of(sv.center, cell_m_)));
+}
+
+bool OcclusionGrid::clear(const Eigen::Vector3d& from, const Eigen::Vector3d& target) const {
+  const Eigen::Vector3d d = target - from;
+  const double len = d.norm();
+  if (len <= cell_m_) return true;
+  // Sample at a third of a cell: a ray cannot skip a cell it crosses by more than that.
+  const double step = cell_m_ / 3.0;
+  const double stop = len - cell_m_;  // the target's own patch does not occlude it
+  uint64_t last = ~uint64_t{0};
+  for (double t = step; t < stop; t += step) {
+    const uint64_t key = core::seed_key(core::cell_of(from + d * (t / len), cell_m_));
+    if (key == last) continue;
+    last = key;
+    if (cells_.count(key)) return false;
+  }
+  return true;
+}
+
+ViewGeometry view_geometry(const Eigen::Vector3d& sensor, const Eigen::Vector3d& view_normal,
+                           const Eigen::Vector3d& target, const Eigen::Vector3d& target_normal) {
+  ViewGeometry g;
+  const Eigen::Vector3d m = target - sensor;
+  g.distance_m = m.norm();
+  if (g.distance_m <= 1e-9) return g;
+  const Eigen::Vector3d u = m / g.distance_m;
+  const double tn = target_normal.norm();
+  const double c = tn > 1e-9 ? std::abs(u.dot(target_normal) / tn) : 1.0;
+  g.incidence_rad = std::acos(std::clamp(c, 0.0, 1.0));
+  const double vn = view_normal.norm();
+  const double s = vn > 1e-9 ? u.dot(view_normal) / vn : u.z();
+  g.elevation_rad = std::asin(std::clamp(s, -1.0, 1.0));
+  return g;
+}
+
+bool angles_ok(const ViewGeometry& g, const PlannerOptions& o) {
+  return g.incidence_rad < o.gamma_th_deg * kDegToRad && g.elevation_rad >= o.theta_l_deg * kDegToRad &&
+         g.elevation_rad <= o.theta_u_deg * kDegToRad;
+}
+
+}  // namespace hexplore::planning

@@ -1,0 +1,50 @@
+#pragma once
+// The visibility function J and score Vis of the paper ("Task-View Generation") over the
+// supervoxel map: a line of sight is blocked by facade supervoxels (walls, obstacles), each
+// taken as its eta_s grid cell; ground is treated as non-occluding because views are lifted
+// to sensor height above it.
+
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "common/core/seed_key.h"
+#include "common/highlevel/high_level_map.h"
+#include "common/planning/capabilities.h"
+
+namespace hexplore::planning {
+
+class OcclusionGrid {
+ public:
+  OcclusionGrid(const highlevel::HighLevelMap& map, double cell_m);
+  // True when the segment from `from` to `target` crosses no occupied cell except cells
+  // within one cell size of the target (its own wall patch).
+  bool clear(const Eigen::Vector3d& from, const Eigen::Vector3d& target) const;
+  size_t occupied_cells() const { return cells_.size(); }
+
+ private:
+  double cell_m_;
+  std::unordered_set<uint64_t> cells_;
+};
+
+// Geometry of one (view, target) pair.
+struct ViewGeometry {
+  double distance_m = 0.0;     // |m|
+  double incidence_rad = 0.0;  // angle between the view direction and the target normal (either side)
+  double elevation_rad = 0.0;  // observation angle: elevation of the target above the view's plane
+};
+
+ViewGeometry view_geometry(const Eigen::Vector3d& sensor, const Eigen::Vector3d& view_normal,
+                           const Eigen::Vector3d& target, const Eigen::Vector3d& target_normal);
+
+// The angle part of J (incidence < gamma_th, observation angle within [theta_l, theta_u]).
+bool angles_ok(const ViewGeometry& g, const PlannerOptions& o);
+
+// Vis = J / (beta_i * Inc + beta_l * |m|), Inc in radians; 0 when J = 0 is known.
+inline double visibility_score(const ViewGeometry& g, const PlannerOptions& o) {
+  return 1.0 / (o.beta_i * g.incidence_rad + o.beta_l * g.distance_m + 1e-9);
+}
+
+}  // namespace hexplore::planning

@@ -1,0 +1,267 @@
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "common/core/team_config.h"
+#include "common/highlevel/supervoxel.h"
+#include "common/planning/clustering.h"
+#include "common/planning/cost_model.h"
+#include "common/planning/labels.h"
+#include "common/planning/planner_registry.h"
+#include "common/planning/rng.h"
+#include "common/planning/synthetic_scene.h"
+
+namespace hexplore::planning {
+namespace {
+
+core::TeamConfig two_species_team() {
+  core::TeamConfig team;
+  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
+  team.robots = {{"slug1", "SLUGCAT", {1.5, 1.5, 0}, 0},
+                 {"slug2", "SLUGCAT", {28.5, 18.5, 0}, 0},
+                 {"mr1", "MR1000", {1.5, 18.5, 0}, 0},
+                 {"mr2", "MR1000", {20.5, 1.5, 0}, 0}};
+  return team;
+}
+
+// 30 x 20 m with one building and a rubble band that cuts off the east end (x >= 26) for
+// the wheeled species.
+SyntheticSceneOptions small_scene() {
+  SyntheticSceneOptions o;
+  o.width_cells = 30;
+  o.depth_cells = 20;
+  o.buildings = {{5, 5, 14, 13, 5}};
+  o.rubble = {Eigen::Vector4i(24, 0, 25, 19)};
+  o.covered_fraction = 0.3;
+  return o;
+}
+
+struct Fixture {
+  core::TeamConfig team = two_species_team();
+  TeamCapabilities caps = capabilities_from(team);
+  PlannerOptions options;
+  highlevel::HighLevelMap map{highlevel::species_levels(team)};
+  Fixture() {
+    options = PlannerOptions::from(team.params);
+    options.ga_time_budget_s = 0.0;  // generation budget only: deterministic
+    options.ga_max_generations = 150;
+    map.apply(synthetic_scene(small_scene()));
+  }
+  PlanRequest request(int self) const {
+    PlanRequest r;
+    r.map = &map;
+    for (const auto& rc : team.robots) r.robots.push_back({rc.id, *team.species_index(rc.species), rc.start_position_m});
+    r.self = self;
+    return r;
+  }
+  std::unique_ptr<Planner> planner(const std::string& name) const {
+    auto p = PlannerRegistry::builtin().create(name);
+    p->configure({caps, options});
+    p->activate();
+    return p;
+  }
+};
+
+TEST(Labels, MatchingReadsRequirementAtMostCapability) {
+  const core::TeamConfig team = two_species_team();
+  const TeamCapabilities caps = capabilities_from(team);
+  // SLUGCAT: traversal 2, observation level 1 (10 m); MR1000: traversal 1, observation 2 (27 m).
+  ASSERT_EQ(caps.species[0].traversal_level, 2);
+  ASSERT_EQ(caps.species[0].observation_level, 1);
+  ASSERT_EQ(caps.species[1].observation_level, 2);
+  EXPECT_EQ(task_label(1, 1, caps, 10, 1), kPublic);
+  EXPECT_EQ(task_label(1, 2, caps, 10, 1), 0);   // rubble: SLUGCAT only
+  EXPECT_EQ(task_label(2, 1, caps, 10, 1), 1);   // far facade: MR1000 only
+  EXPECT_EQ(task_label(2, 2, caps, 10, 1), kUnassignable);
+  EXPECT_EQ(observation_requirement(5.0, caps), 1);
+  EXPECT_EQ(observation_requirement(15.0, caps), 2);
+  EXPECT_EQ(observation_requirement(30.0, caps), 0);
+  // With three species, the weakest matching one gets a private view.
+  TeamCapabilities three = caps;
+  three.species.push_back({"heavy", 3, 2, 27.0, 0.3, 1.0});
+  EXPECT_EQ(task_label(2, 1, three, 10, 1), 1);  // MR1000 (score 12) beats heavy (32)
+}
+
+TEST(TaskViews, FacadeViewsAreVisibleAndRespectRequirements) {
+  Fixture f;
+  const MapContext ctx(f.map, f.options);
+  ViewGenerationStats stats;
+  const auto views = generate_task_views(ctx, f.caps, f.options, &stats);
+  ASSERT_GT(stats.facade_views, 0);
+  ASSERT_GT(stats.ground_views, 0);
+  std::set<uint64_t> targets;
+  for (const auto& v : views) {
+    for (uint64_t t : v.targets) EXPECT_TRUE(targets.insert(t).second) << "target seen by two task views";
+    const auto* g = f.map.find(v.ground_key);
+    ASSERT_NE(g, nullptr);
+    EXPECT_TRUE(g->traversable());
+    EXPECT_EQ(v.traversal_requirement, g->traversal_requirement);
+    if (v.facade) {
+      const auto* t = f.map.find(v.key);
+      ASSERT_TRUE(t && t->facade() && !t->covered);
+      EXPECT_TRUE(ctx.occlusion.clear(g->center + Eigen::Vector3d(0, 0, f.options.sensor_height_m), t->center));
+      EXPECT_LT((t->center - g->center).norm(), f.caps.max_observation_range() + 1.0);
+    }
+  }
+  EXPECT_TRUE(std::is_sorted(views.begin(), views.end(), [](auto& a, auto& b) { return a.key < b.key; }));
+}
+
+TEST(TaskViews, WallsOccludeTheirBackSide) {
+  // A facade target behind a thick wall, seen from one side only.
+  highlevel::MapUpdate up;
+  up.full_snapshot = true;
+  auto add = [&](Eigen::Vector3d c, highlevel::SurfaceClass s, Eigen::Vector3d n, bool covered) {
+    highlevel::Supervoxel sv;
+    sv.center = c;
+    sv.normal = n;
+    sv.surface = s;
+    sv.covered = covered;
+    sv.traversal_requirement = s == highlevel::SurfaceClass::kGround ? 1 : 0;
+    sv.key = highlevel::supervoxel_key(core::cell_of(c, 1.0), s);
+    up.upserts.push_back(sv);
+    return sv.key;
+  };
+  const uint64_t west = add({2.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ(), true);
+  add({9.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ(), true);
+  add({5.5, 0.5, 1.5}, highlevel::SurfaceClass::kFacade, -Eigen::Vector3d::UnitX(), true);  // occluder
+  const uint64_t target = add({7.5, 0.5, 1.5}, highlevel::SurfaceClass::kFacade, -Eigen::Vector3d::UnitX(), false);
+  highlevel::HighLevelMap map({2, 1});
+  map.apply(up);
+  Fixture f;
+  const MapContext ctx(map, f.options);
+  const auto views = generate_task_views(ctx, f.caps, f.options);
+  ASSERT_EQ(views.size(), 1u);
+  EXPECT_EQ(views[0].key, target);
+  EXPECT_NE(views[0].ground_key, west);  // the west view is behind the occluder
+}
+
+std::set<std::vector<uint64_t>> cluster_key_sets(const std::vector<TaskView>& views, const std::vector<TaskCluster>& cs) {
+  std::set<std::vector<uint64_t>> out;
+  for (const auto& c : cs) {
+    std::vector<uint64_t> keys;
+    for (int v : c.views) keys.push_back(views[size_t(v)].key);
+    EXPECT_EQ(c.id, keys.front());
+    out.insert(keys);
+  }
+  return out;
+}
+
+TEST(Clustering, IndependentOfInputOrderAndPerLabel) {
+  Fixture f;
+  const MapContext ctx(f.map, f.options);
+  auto views = generate_task_views(ctx, f.caps, f.options);
+  const auto clusters = cluster_views(views, f.options.eta_r_m);
+  const auto reference = cluster_key_sets(views, clusters);
+  for (const auto& c : clusters)
+    for (int v : c.views) {
+      EXPECT_EQ(views[size_t(v)].label, c.label);
+      EXPECT_LE((views[size_t(v)].position - c.center).norm(), 2 * f.options.eta_r_m);
+    }
+  Rng rng(5);
+  for (int trial = 0; trial < 5; ++trial) {
+    rng.shuffle(views);
+    EXPECT_EQ(cluster_key_sets(views, cluster_views(views, f.options.eta_r_m)), reference);
+  }
+}
+
+TEST(Planner, EveryClusterGoesToExactlyOneMatchingReachableRobot) {
+  Fixture f;
+  for (const std::string name : {"hexplore", "no-hetero", "no-mnss"}) {
+    auto planner = f.planner(name);
+    const PlanResult res = planner->plan(f.request(0));
+    const TeamCapabilities caps = name == "no-hetero" ? f.caps.homogeneous() : f.caps;
+    const MapContext ctx(f.map, f.options);
+    const auto views = generate_task_views(ctx, caps, f.options);
+    const auto clusters = cluster_views(views, f.options.eta_r_m);
+    std::map<uint64_t, const TaskCluster*> by_id;
+    for (const auto& c : clusters) by_id[c.id] = &c;
+    std::map<uint64_t, int> times;
+    const auto req = f.request(0);
+    for (size_t r = 0; r < res.robots.size(); ++r) {
+      const int k = req.robots[r].species;
+      const auto start = f.map.graph().nearest(req.robots[r].position, k);
+      ASSERT_TRUE(start);
+      for (uint64_t id : res.robots[r].cluster_ids) {
+        ++times[id];
+        const TaskCluster* c = by_id.at(id);
+        EXPECT_TRUE(c->label == kPublic || c->label == k) << name << ": cluster " << id << " to robot " << r;
+        const auto anchor = f.map.graph().nearest(c->center, k);
+        ASSERT_TRUE(anchor);
+        EXPECT_TRUE(std::isfinite(f.map.graph().dist(*start, *anchor, k))) << name << ": unreachable cluster";
+        for (int v : c->views)  // every view of it is reachable for this species
+          EXPECT_TRUE(std::isfinite(f.map.graph().dist(*start, views[size_t(v)].ground_key, k)));
+      }
+    }
+    for (const auto& [id, n] : times) EXPECT_EQ(n, 1) << name << ": cluster " << id;
+    EXPECT_EQ(int(times.size()) + res.dropped_clusters, res.clusters) << name;
+    EXPECT_GT(res.robots[0].route.size(), 0u);
+    ASSERT_TRUE(res.path.valid) << name;
+    EXPECT_LT((res.path.waypoints.front() - req.robots[0].position).norm(), 1.5);
+    EXPECT_EQ(res.path.goal.ground_key, res.robots[0].route.front().ground_key);
+  }
+}
+
+TEST(Planner, WheeledRobotsNeverGetClustersBehindRubble) {
+  Fixture f;
+  const PlanResult res = f.planner("hexplore")->plan(f.request(2));
+  for (size_t r = 2; r < 4; ++r)  // the MR1000 robots
+    for (const auto& c : res.robots[r].cluster_centers) EXPECT_LT(c.x(), 24.0);
+  bool east = false;
+  for (size_t r = 0; r < 2; ++r)
+    for (const auto& c : res.robots[r].cluster_centers) east |= c.x() > 26.0;
+  EXPECT_TRUE(east) << "the tracked robots cover the east end";
+}
+
+TEST(Planner, SameInputSameRoutesOnEveryRobot) {
+  Fixture f;
+  // Two robots plan independently (separate planner instances, maps fed in different order).
+  highlevel::HighLevelMap other(highlevel::species_levels(f.team));
+  auto up = synthetic_scene(small_scene());
+  std::reverse(up.upserts.begin(), up.upserts.end());
+  std::reverse(up.edge_upserts.begin(), up.edge_upserts.end());
+  other.apply(up);
+  PlanRequest a = f.request(0), b = f.request(3);
+  b.map = &other;
+  const PlanResult ra = f.planner("hexplore")->plan(a);
+  const PlanResult rb = f.planner("hexplore")->plan(b);
+  ASSERT_EQ(ra.robots.size(), rb.robots.size());
+  for (size_t r = 0; r < ra.robots.size(); ++r) EXPECT_EQ(ra.robots[r].cluster_ids, rb.robots[r].cluster_ids);
+  EXPECT_EQ(ra.fitness, rb.fitness);
+  // Re-planning with the shared solution as reference keeps the assignment.
+  PlanRequest next = f.request(0);
+  next.round = 1;
+  next.shared = {ra.as_reference("slug1"), rb.as_reference("mr2")};
+  const PlanResult rc = f.planner("hexplore")->plan(next);
+  ASSERT_TRUE(rc.agreement.has_value());
+  EXPECT_GE(*rc.agreement, 0.9);
+}
+
+TEST(Planner, AblationsPlanAndRegistryNamesThem) {
+  Fixture f;
+  const PlannerRegistry reg = PlannerRegistry::builtin();
+  EXPECT_EQ(reg.names(), (std::vector<std::string>{"hexplore", "no-assign", "no-cluster", "no-hetero", "no-mnss"}));
+  try {
+    reg.create("greedy");
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "unknown planner 'greedy'; known planners: hexplore, no-assign, no-cluster, no-hetero, no-mnss");
+  }
+  for (const auto& name : reg.names()) {
+    auto p = f.planner(name);
+    EXPECT_EQ(p->name(), name);
+    const PlanResult res = p->plan(f.request(1));
+    EXPECT_EQ(res.planner, name);
+    EXPECT_GT(res.views, 0) << name;
+    EXPECT_FALSE(res.robots[1].route.empty()) << name;
+    EXPECT_TRUE(res.path.valid) << name;
+  }
+  // no-hetero sees fewer, all-public views (weakest traversal, shortest range).
+  const PlanResult full = f.planner("hexplore")->plan(f.request(0));
+  const PlanResult flat = f.planner("no-hetero")->plan(f.request(0));
+  EXPECT_LT(flat.views, full.views);
+}
+
+}  // namespace
+}  // namespace hexplore::planning
