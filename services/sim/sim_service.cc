@@ -1,0 +1,302 @@
+#include "services/sim/sim_service.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+#include "common/core/clock.h"
+#include "common/core/config_error.h"
+#include "common/core/log.h"
+#include "common/sim/mesh_io.h"
+#include "common/sim/rng.h"
+#include "common/sim/scene_error.h"
+#include "common/transport/topics.h"
+
+namespace hexplore::sim {
+namespace {
+
+namespace topics = transport::topics;
+
+constexpr int64_t kTeammateTimeoutNs = 2'000'000'000;  // a proxy whose poses stopped is dropped
+
+void set_vec(v1::Vec3* out, const Eigen::Vector3d& v) {
+  out->set_x(v.x());
+  out->set_y(v.y());
+  out->set_z(v.z());
+}
+
+Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+void set_pose(v1::Pose* out, const Eigen::Isometry3d& pose) {
+  set_vec(out->mutable_position_m(), pose.translation());
+  const Eigen::Quaterniond q(pose.linear());
+  out->mutable_orientation()->set_w(q.w());
+  out->mutable_orientation()->set_x(q.x());
+  out->mutable_orientation()->set_y(q.y());
+  out->mutable_orientation()->set_z(q.z());
+}
+
+double number_option(const service::ServiceContext& context, const std::string& name, double fallback, double min,
+                     double max) {
+  const auto& args = context.arguments();
+  const auto it = args.find(name);
+  if (it == args.end()) return fallback;
+  double v = 0;
+  try {
+    size_t used = 0;
+    v = std::stod(it->second, &used);
+    if (used != it->second.size()) throw std::invalid_argument(it->second);
+  } catch (const std::exception&) {
+    throw core::ConfigError("command line", "--" + name, "expects a number, got '" + it->second + "'");
+  }
+  if (!(v >= min && v <= max))
+    throw core::ConfigError("command line", "--" + name,
+                            "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+  return v;
+}
+
+}  // namespace
+
+v1::MotionState to_proto(MotionState state) {
+  switch (state) {
+    case MotionState::kIdle: return v1::MOTION_STATE_IDLE;
+    case MotionState::kMoving: return v1::MOTION_STATE_MOVING;
+    case MotionState::kStopped: return v1::MOTION_STATE_STOPPED;
+    case MotionState::kBlocked: return v1::MOTION_STATE_BLOCKED;
+    case MotionState::kEmergencyStop: return v1::MOTION_STATE_EMERGENCY_STOP;
+  }
+  return v1::MOTION_STATE_UNSPECIFIED;
+}
+
+v1::ScanFrame to_scan_frame(const LidarScan& scan, const Eigen::Isometry3d& body_pose, double max_range_m) {
+  v1::ScanFrame frame;
+  frame.set_sensor_name(scan.sensor_name);
+  set_vec(frame.mutable_sensor_origin_m(), scan.origin);
+  set_pose(frame.mutable_body_pose(), body_pose);
+  // Eigen::Vector3f is three packed floats; the wire format is little-endian float32 (x86/ARM).
+  static_assert(sizeof(Eigen::Vector3f) == 12);
+  frame.mutable_points_xyz_f32()->assign(reinterpret_cast<const char*>(scan.points.data()), scan.points.size() * 12);
+  frame.set_point_count(static_cast<uint32_t>(scan.points.size()));
+  frame.set_max_range_m(max_range_m);
+  return frame;
+}
+
+void SimService::load_world(service::ServiceContext& context) {
+  const auto& team = context.team();
+  MeshImportOptions import;
+  const auto& args = context.arguments();
+  if (auto it = args.find("scene-up"); it != args.end()) import.up_axis = parse_up_axis(it->second, "--scene-up");
+  import.scale = number_option(context, "scene-scale", 1.0, 1e-6, 1e6);
+  import.yaw_deg = number_option(context, "scene-yaw-deg", 0.0, -360, 360);
+  std::string scene = team.scene;
+  if (!is_builtin_scene(scene) && std::filesystem::path(scene).is_relative() && !team.source_file.empty()) {
+    // A mesh path in a team file is relative to that file.
+    const auto beside = std::filesystem::path(team.source_file).parent_path() / scene;
+    if (std::filesystem::exists(beside)) scene = beside.string();
+  }
+  scene_ = load_scene(scene, team.params.seed, import);
+  caster_ = std::make_unique<RayCaster>(scene_.mesh);
+  if (auto it = args.find("scene-dir"); it != args.end() && is_builtin_scene(scene)) {
+    std::filesystem::create_directories(it->second);
+    const auto path = std::filesystem::path(it->second) / (scene + "_seed" + std::to_string(team.params.seed) + ".ply");
+    write_mesh(scene_.mesh, path.string());
+  }
+}
+
+void SimService::setup(service::ServiceContext& context) {
+  context_ = &context;
+  robot_id_ = context.robot_id();
+  const core::RobotConfig* robot = context.robot();
+  const core::SpeciesConfig* species = context.species();
+  if (!robot || !species) throw core::ConfigError(context.team().source_file, "robots", "sim needs a robot of the team");
+
+  const double rtf = number_option(context, "real-time-factor", 1.0, 0.01, 100.0);
+  const double step_hz = number_option(context, "step-hz", 20.0, 1.0, 1000.0);
+  const double scan_hz = number_option(context, "scan-hz", 2.0, 0.01, 100.0);
+  clock_ = SimClock(rtf);
+  step_ns_ = static_cast<int64_t>(1e9 / step_hz);
+  scan_period_ns_ = static_cast<int64_t>(1e9 / scan_hz);
+
+  try {
+    load_world(context);
+    const uint32_t index = static_cast<uint32_t>(*context.team().robot_index(robot_id_));
+    motion_ = std::make_unique<RobotMotion>(*caster_, *species, robot->start_position_m,
+                                            robot->start_yaw_deg * M_PI / 180.0, index + 1);
+  } catch (const SceneError& e) {
+    throw core::ConfigError(context.team().source_file, "scene", e.what());
+  }
+
+  auto& m = context.metrics();
+  const metrics::Labels labels = {{"robot", robot_id_}};
+  auto* scan_family = m.histogram_family("hexplore_sim_scan_seconds", "Time to cast one LiDAR frame",
+                                         metrics::latency_buckets_s());
+  auto* rays_family = m.gauge_family("hexplore_sim_rays_per_second", "Rays cast per second in the last LiDAR frame");
+  const uint64_t robot_seed = mix_seed(context.team().params.seed, *context.team().robot_index(robot_id_) + 1);
+  for (size_t i = 0; i < species->lidars.size(); ++i) {
+    Sensor s;
+    s.model = std::make_unique<LidarModel>(species->lidars[i], mix_seed(robot_seed, i + 1));
+    const metrics::Labels sensor_labels = {{"robot", robot_id_}, {"sensor", species->lidars[i].name}};
+    s.scan_seconds = scan_family->add(sensor_labels);
+    s.rays_per_second = rays_family->add(sensor_labels);
+    sensors_.push_back(std::move(s));
+  }
+  blocked_ = m.counter_family("hexplore_sim_blocked_total", "Times the robot stopped on terrain beyond its limits")
+                 ->add(labels);
+  collisions_ = m.counter_family("hexplore_sim_collisions_total", "Contacts between this robot and a teammate")->add(labels);
+  emergency_stops_ = m.counter_family("hexplore_sim_emergency_stops_total", "Emergency stops obeyed")->add(labels);
+  odometry_m_ = m.gauge_family("hexplore_sim_odometry_meters", "Trajectory length travelled")->add(labels);
+  sim_time_s_ = m.gauge_family("hexplore_sim_time_seconds", "Simulation time")->add(labels);
+
+  // Inputs: own safety (motion), teammates' sims (team/pose), the station (mission).
+  context.connect(robot_id_, core::ServiceKind::kSafety);
+  for (const auto& other : context.team().robots)
+    if (other.id != robot_id_) context.connect(other.id, core::ServiceKind::kSim);
+  context.connect(std::string(core::kStationId), core::ServiceKind::kStation);
+  auto& sub = context.subscriber();
+  sub.on<v1::MotionCommand>(topics::motion(robot_id_),
+                            [this](const transport::Received<v1::MotionCommand>& r) { on_motion(r.message); });
+  sub.on<v1::RobotPose>(std::string(topics::kTeamPose), [this](const transport::Received<v1::RobotPose>& r) {
+    on_team_pose(r.header.robot_id(), r.message);
+  });
+  sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
+                             [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
+
+  const auto wall = std::chrono::nanoseconds(std::max<int64_t>(clock_.wall_period_ns(step_ns_), 1'000'000));
+  context.loop().add_timer(wall, [this] { tick(); });
+  core::LogLine(core::LogLevel::kInfo, "sim")
+      << robot_id_ << ": " << scene_.name << " (" << scene_.mesh.triangle_count() << " triangles), " << species->name
+      << " at " << motion_->ground_position().transpose() << ", rtf " << rtf;
+  context.set_state(v1::SERVICE_STATE_RUNNING, to_string(motion_->state()));
+  publish_pose();
+}
+
+void SimService::on_shutdown(service::ServiceContext&) {
+  if (motion_) motion_->stop();
+}
+
+void SimService::on_motion(const v1::MotionCommand& command) {
+  if (command.has_follow()) {
+    std::vector<Eigen::Vector3d> path;
+    for (const auto& w : command.follow().waypoints_m()) path.push_back(vec(w));
+    motion_->follow(std::move(path), command.follow().speed_mps());
+    if (command.follow().has_look_at()) look_at_ = vec(command.follow().look_at_m());
+    else look_at_.reset();
+  } else if (command.has_stop()) {
+    motion_->stop();
+  }
+}
+
+void SimService::on_mission(const v1::MissionCommand& command) {
+  if (!command.target_robot().empty() && command.target_robot() != robot_id_) return;
+  switch (command.command_case()) {
+    case v1::MissionCommand::kEmergencyStop:
+      if (motion_->state() != MotionState::kEmergencyStop) emergency_stops_->increment();
+      motion_->emergency_stop();
+      publish_pose();  // report the halt at once, not at the next step
+      break;
+    case v1::MissionCommand::kStop:
+      motion_->stop();
+      publish_pose();
+      break;
+    case v1::MissionCommand::kStart:
+      motion_->release();
+      break;
+    default:
+      break;
+  }
+}
+
+void SimService::on_team_pose(const std::string& sender, const v1::RobotPose& pose) {
+  if (sender == robot_id_ || sender.empty()) return;
+  const auto index = context_->team().robot_index(sender);
+  if (!index) return;
+  Teammate& t = teammates_[sender];
+  t.box.id = static_cast<uint32_t>(*index) + 1;
+  t.box.center = vec(pose.pose().position_m());
+  const auto& q = pose.pose().orientation();
+  Eigen::Quaterniond orientation(q.w(), q.x(), q.y(), q.z());
+  t.box.orientation = orientation.norm() > 1e-9 ? orientation.normalized() : Eigen::Quaterniond::Identity();
+  Eigen::Vector3d half = vec(pose.body_half_extents_m());
+  if (!(half.minCoeff() > 0)) {
+    const auto* robot = context_->team().find_robot(sender);
+    const auto* species = robot ? context_->team().find_species(robot->species) : nullptr;
+    half = species ? species->body_half_extents_m : Eigen::Vector3d(0.5, 0.35, 0.4);
+  }
+  t.box.half_extents = half;
+  t.received_ns = core::monotonic_ns();
+}
+
+std::vector<ProxyBox> SimService::live_teammates() const {
+  std::vector<ProxyBox> out;
+  const int64_t now = core::monotonic_ns();
+  for (const auto& [id, t] : teammates_)
+    if (now - t.received_ns < kTeammateTimeoutNs) out.push_back(t.box);
+  return out;
+}
+
+void SimService::tick() {
+  const std::vector<ProxyBox> mates = live_teammates();
+  clock_.step(step_ns_);
+  motion_->step(core::ns_to_s(step_ns_), mates);
+  if (motion_->state() == MotionState::kBlocked && last_state_ != MotionState::kBlocked) {
+    blocked_->increment();
+    core::LogLine(core::LogLevel::kInfo, "sim") << robot_id_ << ": blocked (" << to_string(motion_->block_reason())
+                                               << ") at " << motion_->ground_position().transpose();
+  }
+  last_state_ = motion_->state();
+  if (motion_->collisions() > reported_collisions_) {
+    collisions_->increment(motion_->collisions() - reported_collisions_);
+    reported_collisions_ = motion_->collisions();
+  }
+  odometry_m_->set(motion_->odometry_m());
+  sim_time_s_->set(core::ns_to_s(clock_.now_ns()));
+  publish_pose();
+  if (clock_.now_ns() >= next_scan_ns_) {
+    next_scan_ns_ = clock_.now_ns() + scan_period_ns_;
+    scan_all();
+  }
+  context_->set_state(v1::SERVICE_STATE_RUNNING, to_string(motion_->state()));
+}
+
+void SimService::scan_all() {
+  const std::vector<ProxyBox> mates = live_teammates();
+  const Eigen::Isometry3d body = motion_->body_pose();
+  for (auto& s : sensors_) {
+    if (look_at_) s.model->aim_at(*look_at_, body);
+    const int64_t start = core::monotonic_ns();
+    const LidarScan scan = s.model->scan(*caster_, body, mates);
+    const double seconds = std::max(1e-9, core::ns_to_s(core::monotonic_ns() - start));
+    s.scan_seconds->observe(seconds);
+    s.rays_per_second->set(static_cast<double>(scan.rays) / seconds);
+    context_->publisher().publish(topics::scan(robot_id_), to_scan_frame(scan, body, s.model->config().max_range_m),
+                                  clock_.now_ns());
+  }
+}
+
+void SimService::publish_pose() {
+  v1::RobotPose pose;
+  set_pose(pose.mutable_pose(), motion_->body_pose());
+  set_vec(pose.mutable_velocity_mps(), motion_->velocity());
+  pose.set_state(to_proto(motion_->state()));
+  set_vec(pose.mutable_body_half_extents_m(), motion_->species().body_half_extents_m);
+  pose.set_odometry_m(motion_->odometry_m());
+  pose.set_collisions(motion_->collisions());
+  context_->publisher().publish(topics::pose(robot_id_), pose, clock_.now_ns());
+  context_->publisher().publish(topics::kTeamPose, pose, clock_.now_ns());
+}
+
+void SimService::fill_status(v1::ServiceStatus& status) {
+  if (!motion_) return;
+  auto add = [&](const char* name, double value) {
+    auto* v = status.add_values();
+    v->set_name(name);
+    v->set_value(value);
+  };
+  add("sim_time_s", core::ns_to_s(clock_.now_ns()));
+  add("odometry_m", motion_->odometry_m());
+  add("collisions", motion_->collisions());
+  add("blocked", motion_->state() == MotionState::kBlocked ? 1.0 : 0.0);
+}
+
+}  // namespace hexplore::sim

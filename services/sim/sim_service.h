@@ -1,0 +1,89 @@
+#pragma once
+// The sim process of one robot (paper: decentralized simulation): loads the team's world,
+// simulates only its own robot (body, LiDARs, motion) and publishes scans and poses with sim
+// time; teammates are kinematic proxy boxes driven by their team/pose messages and are hit
+// by this robot's rays. Executes MotionCommands from its safety service and obeys mission
+// commands: stop halts, emergency stop halts at once and ignores motion until StartMission.
+//
+// Options (after --config/--robot):
+//   --scan-hz N            LiDAR frames per sim second, every sensor (default 2)
+//   --step-hz N            motion steps and pose messages per sim second (default 20)
+//   --real-time-factor F   sim seconds per wall second (default 1)
+//   --scene-dir DIR        write the generated scene mesh there (created on demand)
+//   --scene-up z|y, --scene-scale S, --scene-yaw-deg D   import options for a mesh-file scene
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "common/service/service.h"
+#include "common/sim/lidar.h"
+#include "common/sim/ray_caster.h"
+#include "common/sim/robot_motion.h"
+#include "common/sim/scenes.h"
+#include "hexplore/v1/mission.pb.h"
+#include "hexplore/v1/motion.pb.h"
+#include "hexplore/v1/pose.pb.h"
+#include "hexplore/v1/scan.pb.h"
+
+namespace hexplore::sim {
+
+class SimService : public service::Service {
+ public:
+  core::ServiceKind kind() const override { return core::ServiceKind::kSim; }
+  void setup(service::ServiceContext& context) override;
+  void on_shutdown(service::ServiceContext& context) override;
+  void fill_status(v1::ServiceStatus& status) override;
+
+ private:
+  struct Teammate {
+    ProxyBox box;
+    int64_t received_ns = 0;  // monotonic
+  };
+  struct Sensor {
+    std::unique_ptr<LidarModel> model;
+    metrics::Histogram* scan_seconds = nullptr;
+    metrics::Gauge* rays_per_second = nullptr;
+  };
+
+  void load_world(service::ServiceContext& context);
+  void on_motion(const v1::MotionCommand& command);
+  void on_mission(const v1::MissionCommand& command);
+  void on_team_pose(const std::string& sender, const v1::RobotPose& pose);
+  void tick();
+  void scan_all();
+  void publish_pose();
+  std::vector<ProxyBox> live_teammates() const;
+
+  service::ServiceContext* context_ = nullptr;
+  std::string robot_id_;
+  SceneInfo scene_;
+  std::unique_ptr<RayCaster> caster_;
+  std::unique_ptr<RobotMotion> motion_;
+  std::vector<Sensor> sensors_;
+  std::map<std::string, Teammate> teammates_;
+  std::optional<Eigen::Vector3d> look_at_;
+  SimClock clock_;
+  int64_t step_ns_ = 50'000'000;
+  int64_t scan_period_ns_ = 500'000'000;
+  int64_t next_scan_ns_ = 0;
+  MotionState last_state_ = MotionState::kIdle;
+  uint32_t reported_collisions_ = 0;
+
+  metrics::Counter* blocked_ = nullptr;
+  metrics::Counter* collisions_ = nullptr;
+  metrics::Counter* emergency_stops_ = nullptr;
+  metrics::Gauge* odometry_m_ = nullptr;
+  metrics::Gauge* sim_time_s_ = nullptr;
+};
+
+// ScanFrame / RobotPose messages from the simulator's types (exposed for tests).
+v1::ScanFrame to_scan_frame(const LidarScan& scan, const Eigen::Isometry3d& body_pose, double max_range_m);
+v1::MotionState to_proto(MotionState state);
+
+}  // namespace hexplore::sim
