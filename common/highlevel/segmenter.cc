@@ -90,9 +90,9 @@ std::vector<EdgeKey> SupervoxelSegmenter::edges() const {
 }
 
 uint64_t SupervoxelSegmenter::supervoxel_of(const core::GridCell& voxel) const {
-  auto it = voxels_.find(voxel_key(voxel));
-  if (it == voxels_.end() || it->second.label == 0) return 0;
-  return group_of_seed(it->second.label);
+  const VoxelRec* rec = voxels_.find(voxel_key(voxel));
+  if (rec == nullptr || rec->label == 0) return 0;
+  return group_of_seed(rec->label);
 }
 
 uint64_t SupervoxelSegmenter::group_of_seed(uint64_t seed) const {
@@ -120,8 +120,7 @@ Eigen::Vector3d SupervoxelSegmenter::centroid(const Seed& s) const {
 }
 
 void SupervoxelSegmenter::remove_voxel(uint64_t vkey, std::unordered_set<uint64_t>& dirty_seeds) {
-  auto it = voxels_.find(vkey);
-  const VoxelRec& rec = it->second;
+  const VoxelRec rec = *voxels_.find(vkey);
   Seed& cell = seeds_[rec.seed_cell];
   cell.cell_voxels.erase(vkey);
   cell.key_sum[0] -= rec.sample.key.x;
@@ -135,7 +134,7 @@ void SupervoxelSegmenter::remove_voxel(uint64_t vkey, std::unordered_set<uint64_
     touched_seeds_.insert(rec.label);
     reshaped_groups_.insert(group_of_seed(rec.label));
   }
-  voxels_.erase(it);
+  voxels_.erase(vkey);
 }
 
 void SupervoxelSegmenter::insert_voxel(const VoxelSample& v, std::unordered_set<uint64_t>& dirty_seeds) {
@@ -150,7 +149,7 @@ void SupervoxelSegmenter::insert_voxel(const VoxelSample& v, std::unordered_set<
   cell.key_sum[1] += v.key.y;
   cell.key_sum[2] += v.key.z;
   dirty_seeds.insert(rec.seed_cell);
-  voxels_.emplace(vkey, rec);
+  voxels_.insert(vkey) = rec;
 }
 
 // Picks each dirty cell's seed voxel: the voxel nearest the centroid of the cell's voxels
@@ -272,11 +271,8 @@ size_t SupervoxelSegmenter::relabel(const std::unordered_set<uint64_t>& dirty_se
   const auto d1 = dilate(d0);
   const auto d2 = dilate(d1);
 
-  struct Visit {
-    uint64_t label;
-    int level;
-  };
-  std::unordered_map<uint64_t, Visit> visited;
+  // Wavefront state lives in the voxel records, tagged with a fresh stamp per propagation.
+  const uint32_t stamp = ++stamp_;
   std::unordered_map<uint64_t, core::GridCell> seed_voxel_cell;  // label -> seed voxel key
   std::vector<uint64_t> frontier;
   for (uint64_t cell : d2) {
@@ -285,35 +281,43 @@ size_t SupervoxelSegmenter::relabel(const std::unordered_set<uint64_t>& dirty_se
       const uint64_t skey = supervoxel_key(c, surface);
       auto it = seeds_.find(skey);
       if (it == seeds_.end() || it->second.cell_voxels.empty()) continue;
-      visited.emplace(it->second.seed_voxel, Visit{skey, 0});
+      VoxelRec* rec = voxels_.find(it->second.seed_voxel);
+      rec->visit_stamp = stamp;
+      rec->wave_label = skey;
       seed_voxel_cell.emplace(skey, core::cell_of_key(it->second.seed_voxel));
       frontier.push_back(it->second.seed_voxel);
     }
   }
-  std::unordered_map<uint64_t, uint64_t> next;
+  std::vector<uint64_t> next;
   for (int level = 1; level <= hops_ && !frontier.empty(); ++level) {
     next.clear();
     for (uint64_t u : frontier) {
-      const uint64_t label = visited.at(u).label;
-      const bool facade = voxels_.at(u).facade;
+      const VoxelRec* from = voxels_.find(u);
+      const uint64_t label = from->wave_label;
+      const bool facade = from->facade;
       for (int64_t d : kNeighbours) {
         const uint64_t n = shifted(u, d);
-        if (visited.count(n) != 0) continue;
-        auto vit = voxels_.find(n);
-        if (vit == voxels_.end() || vit->second.facade != facade) continue;
-        auto [slot, inserted] = next.emplace(n, label);
-        if (inserted || slot->second == label) continue;
+        VoxelRec* rec = voxels_.find(n);
+        if (rec == nullptr || rec->visit_stamp == stamp || rec->facade != facade) continue;
+        if (rec->candidate_stamp != stamp) {
+          rec->candidate_stamp = stamp;
+          rec->candidate_label = label;
+          next.push_back(n);
+          continue;
+        }
+        if (rec->candidate_label == label) continue;
         const core::GridCell nc = core::cell_of_key(n);
         const int64_t mine = cell_dist2(nc, seed_voxel_cell.at(label));
-        const int64_t theirs = cell_dist2(nc, seed_voxel_cell.at(slot->second));
-        if (mine < theirs || (mine == theirs && label < slot->second)) slot->second = label;
+        const int64_t theirs = cell_dist2(nc, seed_voxel_cell.at(rec->candidate_label));
+        if (mine < theirs || (mine == theirs && label < rec->candidate_label)) rec->candidate_label = label;
       }
     }
-    frontier.clear();
-    for (const auto& [n, label] : next) {
-      visited.emplace(n, Visit{label, level});
-      frontier.push_back(n);
+    for (uint64_t n : next) {
+      VoxelRec* rec = voxels_.find(n);
+      rec->visit_stamp = stamp;
+      rec->wave_label = rec->candidate_label;
     }
+    frontier.swap(next);
   }
 
   size_t examined = 0;
@@ -324,9 +328,8 @@ size_t SupervoxelSegmenter::relabel(const std::unordered_set<uint64_t>& dirty_se
       auto it = seeds_.find(skey);
       if (it == seeds_.end()) continue;
       for (uint64_t vkey : it->second.cell_voxels) {
-        auto vis = visited.find(vkey);
-        const uint64_t label = vis != visited.end() ? vis->second.label : skey;
-        VoxelRec& rec = voxels_.at(vkey);
+        VoxelRec& rec = *voxels_.find(vkey);
+        const uint64_t label = rec.visit_stamp == stamp ? rec.wave_label : skey;
         if (rec.label != label) set_label(vkey, rec, label);
         ++examined;
       }
@@ -362,9 +365,9 @@ std::unordered_set<uint64_t> SupervoxelSegmenter::ground_neighbours(uint64_t gro
   for (uint64_t s : groups_.at(group)) {
     for (uint64_t v : seeds_.at(s).region) {
       for (int64_t d : kNeighbours) {
-        auto it = voxels_.find(shifted(v, d));
-        if (it == voxels_.end() || it->second.facade || it->second.label == 0) continue;
-        const uint64_t g = group_of_seed(it->second.label);
+        const VoxelRec* rec = voxels_.find(shifted(v, d));
+        if (rec == nullptr || rec->facade || rec->label == 0) continue;
+        const uint64_t g = group_of_seed(rec->label);
         if (g != group && g != 0) out.insert(g);
       }
     }
@@ -380,13 +383,13 @@ SegmentationChange SupervoxelSegmenter::update(std::span<const VoxelSample> voxe
 
   for (const VoxelSample& v : voxels) {
     const uint64_t vkey = voxel_key(v.key);
-    auto it = voxels_.find(vkey);
+    VoxelRec* found = voxels_.find(vkey);
     if (v.removed()) {
-      if (it != voxels_.end()) remove_voxel(vkey, dirty);
+      if (found != nullptr) remove_voxel(vkey, dirty);
       continue;
     }
-    if (it != voxels_.end()) {
-      VoxelRec& rec = it->second;
+    if (found != nullptr) {
+      VoxelRec& rec = *found;
       if (rec.facade == !v.traversable_ground()) {  // same class: attributes only
         if (rec.label != 0) {
           Stats& st = seeds_.at(rec.label).stats;

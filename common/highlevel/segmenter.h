@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/highlevel/supervoxel.h"
+#include "common/highlevel/voxel_index.h"
 #include "common/highlevel/voxel_sample.h"
 
 namespace hexplore::highlevel {
@@ -76,6 +77,11 @@ class SupervoxelSegmenter {
     uint64_t seed_cell = 0;  // class-tagged key of the eta_s cell holding the voxel
     uint64_t label = 0;      // class-tagged key of the seed whose region holds the voxel
     bool facade = false;
+    // Wavefront state, valid when the stamps equal the current propagation's stamp.
+    uint32_t visit_stamp = 0;
+    uint32_t candidate_stamp = 0;
+    uint64_t wave_label = 0;
+    uint64_t candidate_label = 0;
   };
   struct Seed {  // one eta_s cell of one surface class
     std::unordered_set<uint64_t> cell_voxels;  // voxels inside the cell
@@ -102,7 +108,8 @@ class SupervoxelSegmenter {
   SegmenterParams params_;
   std::vector<int> levels_;
   int hops_ = 5;
-  std::unordered_map<uint64_t, VoxelRec> voxels_;
+  VoxelIndex<VoxelRec> voxels_;
+  uint32_t stamp_ = 0;
   std::unordered_map<uint64_t, Seed> seeds_;
   std::unordered_map<uint64_t, uint64_t> seed_group_;                // seed -> group key
   std::unordered_map<uint64_t, std::vector<uint64_t>> groups_;       // group key -> seeds
