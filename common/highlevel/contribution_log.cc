@@ -1,8 +1,10 @@
 #include "common/highlevel/contribution_log.h"
 
+#include <cmath>
+
 namespace hexplore::highlevel {
 
-MapUpdate ContributionLog::record(const SupervoxelSegmenter& segmenter, const SegmentationChange& change) {
+void ContributionLog::record(const SupervoxelSegmenter& segmenter, const SegmentationChange& change) {
   MapUpdate u;
   u.removals = change.removed;
   for (uint64_t key : change.upserted) {
@@ -15,7 +17,17 @@ MapUpdate ContributionLog::record(const SupervoxelSegmenter& segmenter, const Se
   for (uint64_t key : change.upserted) pending_keys_.insert(key);
   for (const EdgeKey& e : change.edges_added) pending_edges_.insert(e);
   for (const EdgeKey& e : change.edges_removed) pending_edges_.insert(e);
-  return u;
+}
+
+bool ContributionLog::significant(const Supervoxel& p, const Supervoxel& n) const {
+  if (p.covered != n.covered || p.traversal_requirement != n.traversal_requirement || p.surface != n.surface) {
+    return true;
+  }
+  if ((p.center - n.center).norm() > tolerance_.center_m) return true;
+  const double cos_angle = std::clamp(p.normal.dot(n.normal), -1.0, 1.0);
+  if (std::acos(cos_angle) > tolerance_.normal_deg * M_PI / 180.0) return true;
+  const double count = std::max(1, p.voxel_count);
+  return std::abs(n.voxel_count - p.voxel_count) > tolerance_.voxel_count_ratio * count;
 }
 
 SourcedUpdate ContributionLog::take_increment() {
@@ -23,18 +35,27 @@ SourcedUpdate ContributionLog::take_increment() {
   inc.source = source_;
   inc.seq = ++seq_;
   for (uint64_t key : pending_keys_) {
-    auto it = current_.supervoxels.find(key);
-    if (it != current_.supervoxels.end()) {
-      inc.update.upserts.push_back(it->second);
-    } else {
-      inc.update.removals.push_back(key);
+    auto now = current_.supervoxels.find(key);
+    auto pub = published_.supervoxels.find(key);
+    if (now == current_.supervoxels.end()) {
+      if (pub != published_.supervoxels.end()) {
+        inc.update.removals.push_back(key);
+        published_.supervoxels.erase(pub);
+      }
+    } else if (pub == published_.supervoxels.end() || significant(pub->second, now->second)) {
+      inc.update.upserts.push_back(now->second);
+      published_.supervoxels[key] = now->second;
     }
   }
   for (const EdgeKey& e : pending_edges_) {
-    if (current_.edges.count(e) != 0) {
+    const bool now = current_.edges.count(e) != 0;
+    const bool pub = published_.edges.count(e) != 0;
+    if (now && !pub) {
       inc.update.edge_upserts.push_back(e);
-    } else {
+      published_.edges.insert(e);
+    } else if (!now && pub) {
       inc.update.edge_removals.push_back(e);
+      published_.edges.erase(e);
     }
   }
   pending_keys_.clear();
@@ -46,7 +67,7 @@ SourcedUpdate ContributionLog::snapshot() const {
   SourcedUpdate snap;
   snap.source = source_;
   snap.seq = seq_;
-  snap.update = current_.snapshot();
+  snap.update = published_.snapshot();
   return snap;
 }
 

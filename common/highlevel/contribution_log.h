@@ -2,7 +2,10 @@
 // A robot's own high-level-map contribution and its windowed publication: the segmenter's
 // changes are recorded as they happen, and every eta_c one sequenced increment carries the
 // current state of everything that changed in the window (the paper's incremental
-// transmission). A snapshot of the whole contribution answers repair requests.
+// transmission). Changes below a tolerance (a centre drifting by millimetres as points
+// accumulate) wait until they add up, which is most of the saving over resending. What was
+// published is the robot's contribution: its own fused map uses exactly that, as its peers do.
+// A snapshot of the whole published contribution answers repair requests.
 
 #include <cstdint>
 #include <set>
@@ -21,28 +24,42 @@ struct SourcedUpdate {
   MapUpdate update;
 };
 
+// A published supervoxel is re-sent when a discrete attribute (coverage, traversal
+// requirement, class) changes or its geometry drifts past these bounds.
+struct PublishTolerance {
+  double center_m = 0.05;
+  double normal_deg = 5.0;
+  double voxel_count_ratio = 0.2;
+};
+
 class ContributionLog {
  public:
-  explicit ContributionLog(std::string source) : source_(std::move(source)) {}
+  explicit ContributionLog(std::string source, PublishTolerance tolerance = {})
+      : source_(std::move(source)), tolerance_(tolerance) {}
 
-  // Records one segmentation result; returns it as a change of this contribution (to fuse
-  // into the robot's own map right away).
-  MapUpdate record(const SupervoxelSegmenter& segmenter, const SegmentationChange& change);
-  // This window's increment, numbered seq() + 1. Empty windows still produce one (a
-  // heartbeat), so peers notice a lost last increment and late joiners notice the source.
+  // Records one segmentation result (nothing is published until take_increment).
+  void record(const SupervoxelSegmenter& segmenter, const SegmentationChange& change);
+  // This window's increment, numbered seq() + 1; fuse its update as the robot's own
+  // contribution. Empty windows still produce one (a heartbeat), so peers notice a lost last
+  // increment and late joiners notice the source.
   SourcedUpdate take_increment();
-  // The whole contribution; seq = the last increment taken.
+  // The whole published contribution; seq = the last increment taken.
   SourcedUpdate snapshot() const;
 
   const std::string& source() const { return source_; }
   uint64_t seq() const { return seq_; }
-  const Contribution& contribution() const { return current_; }
+  // What peers hold of this robot (edge lengths on the wire come from these centres).
+  const Contribution& contribution() const { return published_; }
   bool has_pending() const { return !pending_keys_.empty() || !pending_edges_.empty(); }
 
  private:
+  bool significant(const Supervoxel& published, const Supervoxel& now) const;
+
   std::string source_;
+  PublishTolerance tolerance_;
   uint64_t seq_ = 0;
-  Contribution current_;
+  Contribution current_;    // the segmenter's state
+  Contribution published_;  // what the increments so far carried
   std::set<uint64_t> pending_keys_;
   std::set<EdgeKey> pending_edges_;
 };

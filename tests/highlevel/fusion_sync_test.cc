@@ -175,7 +175,7 @@ class TeamSim {
   void sense(int i, std::span<const VoxelSample> voxels) {
     Robot& r = *robots_[i];
     const auto change = r.seg.update(voxels);
-    r.fusion.apply(r.id, r.log.record(r.seg, change));
+    r.log.record(r.seg, change);
   }
   bool lost() { return std::uniform_real_distribution<double>(0, 1)(rng_) < drop_; }
 
@@ -185,6 +185,7 @@ class TeamSim {
     for (auto& src : robots_) {
       if (!src->online) continue;
       const auto inc = src->log.take_increment();
+      src->fusion.apply(src->id, inc.update);
       const std::string wire = to_increment(inc, src->log.contribution()).SerializeAsString();
       bytes_ += wire.size();
       for (auto& dst : robots_) {
