@@ -34,6 +34,7 @@ class Subscriber : public Pollable {
  public:
   // `accounting` may be null; it must outlive the subscriber.
   Subscriber(Context& context, SocketOptions options = {}, Accounting* accounting = nullptr);
+  // Movable while not registered with an EventLoop (the loop keeps its address).
   Subscriber(Subscriber&&) noexcept;
   Subscriber& operator=(Subscriber&&) noexcept;
   ~Subscriber() override;
@@ -46,8 +47,8 @@ class Subscriber : public Pollable {
   // every handler whose prefix matches. A handler that throws std::exception has the message
   // counted as handler_error (the loop goes on). Throws std::invalid_argument on a malformed prefix.
   template <typename M>
-  void on(std::string topic_prefix, std::function<void(const Received<M>&)> handler) {
-    add_handler(std::move(topic_prefix), type_name<M>(),
+  void on(std::string_view topic_prefix, std::function<void(const Received<M>&)> handler) {
+    add_handler(std::string(topic_prefix), type_name<M>(),
                 [handler = std::move(handler), message = M()](std::string_view topic, const v1::Header& header,
                                                                const void* data, size_t size) mutable {
                   message.Clear();
