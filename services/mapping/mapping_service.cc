@@ -1,0 +1,275 @@
+#include "services/mapping/mapping_service.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "common/core/clock.h"
+#include "common/core/config_error.h"
+#include "common/core/log.h"
+#include "common/perception/voxel_proto.h"
+#include "common/transport/topics.h"
+
+namespace hexplore::mapping {
+namespace {
+
+namespace topics = transport::topics;
+
+double parse_double(const std::map<std::string, std::string>& args, const std::string& name, double fallback,
+                    double min_value) {
+  const auto it = args.find(name);
+  if (it == args.end()) return fallback;
+  size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(it->second, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != it->second.size() || !std::isfinite(value) || value < min_value) {
+    throw std::invalid_argument("mapping: --" + name + " expects a number >= " + std::to_string(min_value) + ", got '" +
+                                it->second + "'");
+  }
+  return value;
+}
+
+std::chrono::nanoseconds seconds(double s) {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(s));
+}
+
+Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+}  // namespace
+
+MappingOptions MappingOptions::from_arguments(const std::map<std::string, std::string>& args) {
+  MappingOptions o;
+  o.publish_period_s = parse_double(args, "publish-period-s", o.publish_period_s, 0.001);
+  o.full_snapshot_period_s = parse_double(args, "full-snapshot-period-s", o.full_snapshot_period_s, 0.0);
+  o.save_period_s = parse_double(args, "save-period-s", o.save_period_s, 0.0);
+  o.max_pose_jump_m = parse_double(args, "max-pose-jump-m", o.max_pose_jump_m, 0.0);
+  o.reanchor_after = static_cast<int>(parse_double(args, "reanchor-after", o.reanchor_after, 1.0));
+  o.teammate_timeout_s = parse_double(args, "teammate-timeout-s", o.teammate_timeout_s, 0.0);
+  if (const auto it = args.find("map-file"); it != args.end()) o.map_file = it->second;
+  return o;
+}
+
+void MappingService::setup(service::ServiceContext& context) {
+  context_ = &context;
+  robot_id_ = context.robot_id();
+  options_ = MappingOptions::from_arguments(context.arguments());
+  perception::MapParams params;
+  try {
+    params = perception::make_map_params(context.team(), robot_id_);
+  } catch (const std::invalid_argument& e) {
+    throw core::ConfigError(context.team().source_file, "robots." + robot_id_, e.what());
+  }
+  map_ = std::make_unique<perception::PerceptionMap>(params);
+
+  if (!options_.map_file.empty() && std::filesystem::exists(options_.map_file)) {
+    try {
+      map_->load(options_.map_file);
+      core::LogLine(core::LogLevel::kInfo, "mapping")
+          << robot_id_ << ": resumed " << map_->voxel_count() << " voxels from " << options_.map_file;
+    } catch (const perception::MapFileError& e) {
+      // Keep the unreadable file for inspection instead of overwriting it at the next save.
+      const std::string aside = options_.map_file + ".unreadable";
+      std::error_code ec;
+      std::filesystem::rename(options_.map_file, aside, ec);
+      core::LogLine(core::LogLevel::kError, "mapping")
+          << robot_id_ << ": " << e.what() << "; starting an empty map (old file moved to " << aside << ")";
+    }
+  }
+
+  auto& m = context.metrics();
+  const metrics::Labels labels{{"robot", robot_id_}};
+  integration_seconds_ = m.histogram_family("hexplore_mapping_scan_integration_seconds",
+                                            "Time to integrate one scan, metric updates included",
+                                            metrics::latency_buckets_s())
+                             ->add(labels);
+  points_per_second_ =
+      m.gauge_family("hexplore_mapping_points_per_second", "Points integrated per second of integration time, last scan")
+          ->add(labels);
+  voxel_count_ = m.gauge_family("hexplore_mapping_voxels", "Occupied voxels in the perception map")->add(labels);
+  map_bytes_ = m.gauge_family("hexplore_mapping_map_bytes", "Memory held by the perception map")->add(labels);
+  scans_ = m.counter_family("hexplore_mapping_scans_total", "Scans integrated")->add(labels);
+  points_ = m.counter_family("hexplore_mapping_points_total", "Points integrated")->add(labels);
+  rejected_ = m.counter_family("hexplore_mapping_scans_rejected_total", "Scans refused, by reason");
+  dropped_points_ = m.counter_family("hexplore_mapping_points_dropped_total", "Points dropped from accepted scans, by reason");
+  delta_voxels_ = m.counter_family("hexplore_mapping_delta_voxels_total", "Voxels sent in voxel deltas")->add(labels);
+  delta_bytes_ = m.counter_family("hexplore_mapping_delta_bytes_total", "Payload bytes of voxel deltas sent")->add(labels);
+  saves_failed_ = m.counter_family("hexplore_mapping_map_saves_failed_total", "Map saves that failed")->add(labels);
+  voxel_count_->set(static_cast<double>(map_->voxel_count()));
+
+  context.connect(robot_id_, core::ServiceKind::kSim);
+  for (const auto& robot : context.team().robots) {
+    if (robot.id != robot_id_) context.connect(robot.id, core::ServiceKind::kSim);
+  }
+  auto& sub = context.subscriber();
+  sub.on<v1::ScanFrame>(topics::scan(robot_id_), [this](const transport::Received<v1::ScanFrame>& r) {
+    on_scan(r.header.robot_id(), r.message);
+  });
+  sub.on<v1::RobotPose>(std::string(topics::kTeamPose), [this](const transport::Received<v1::RobotPose>& r) {
+    on_team_pose(r.header.robot_id(), r.message);
+  });
+  context.responder().serve<v1::OccupiedVoxelsRequest, v1::OccupiedVoxels>(
+      [this](const transport::Received<v1::OccupiedVoxelsRequest>&) {
+        return perception::to_occupied_voxels(map_->voxels(), map_->resolution());
+      });
+
+  context.loop().add_timer(seconds(options_.publish_period_s), [this] { publish_changes(); });
+  if (options_.full_snapshot_period_s > 0.0) {
+    context.loop().add_timer(seconds(options_.full_snapshot_period_s), [this] { publish_full_snapshot(); });
+  }
+  if (!options_.map_file.empty() && options_.save_period_s > 0.0) {
+    context.loop().add_timer(seconds(options_.save_period_s), [this] { save_map(); });
+  }
+  // A resumed map goes out whole first, so the hlmap starts from it instead of from deltas.
+  if (map_->voxel_count() > 0) publish_full_snapshot();
+  context.set_state(v1::SERVICE_STATE_RUNNING, "waiting for scans");
+}
+
+void MappingService::on_shutdown(service::ServiceContext&) {
+  publish_changes();
+  save_map();
+}
+
+void MappingService::fill_status(v1::ServiceStatus& status) {
+  auto add = [&](const char* name, double value) {
+    auto* v = status.add_values();
+    v->set_name(name);
+    v->set_value(value);
+  };
+  add("voxels", map_ ? static_cast<double>(map_->voxel_count()) : 0.0);
+  add("scans_integrated", static_cast<double>(scans_integrated_));
+  add("scans_rejected", static_cast<double>(scans_rejected_));
+}
+
+void MappingService::reject(const std::string& reason) {
+  ++scans_rejected_;
+  rejected_->add({{"robot", robot_id_}, {"reason", reason}})->increment();
+  core::log_once(core::LogLevel::kWarn, "mapping", "reject/" + reason,
+                 robot_id_ + ": rejecting scans (" + reason + "); counted in hexplore_mapping_scans_rejected_total");
+}
+
+const char* MappingService::check_pose(const v1::ScanFrame& frame, const Eigen::Vector3d& origin) {
+  if (frame.has_body_pose()) {
+    const v1::Pose& p = frame.body_pose();
+    const Eigen::Vector4d q(p.orientation().w(), p.orientation().x(), p.orientation().y(), p.orientation().z());
+    if (!vec(p.position_m()).allFinite() || !q.allFinite()) return "implausible_pose";
+  }
+  if (!last_origin_ || (origin - *last_origin_).norm() <= options_.max_pose_jump_m) return nullptr;
+  // A jump: refused, unless it keeps being confirmed by consistent scans (a real relocation,
+  // e.g. the driver re-localised), after which the new place is taken as the anchor.
+  if (jumped_origin_ && (origin - *jumped_origin_).norm() <= options_.max_pose_jump_m) {
+    ++jump_streak_;
+  } else {
+    jump_streak_ = 1;
+  }
+  jumped_origin_ = origin;
+  if (jump_streak_ >= options_.reanchor_after) {
+    core::LogLine(core::LogLevel::kWarn, "mapping")
+        << robot_id_ << ": accepting a relocation of " << (origin - *last_origin_).norm() << " m after "
+        << jump_streak_ << " consistent scans";
+    return nullptr;
+  }
+  return "pose_jump";
+}
+
+void MappingService::on_scan(const std::string& sender, const v1::ScanFrame& frame) {
+  if (sender != robot_id_) {
+    reject("foreign_robot");
+    return;
+  }
+  perception::ScanPoints scan;
+  const perception::ScanRejection r = perception::decode_scan(frame, scan_storage_, scan);
+  if (r == perception::ScanRejection::kSizeMismatch) {
+    reject("size_mismatch");
+    return;
+  }
+  if (r == perception::ScanRejection::kBadOrigin) {
+    reject("implausible_pose");
+    return;
+  }
+  if (const char* reason = check_pose(frame, scan.sensor_origin)) {
+    reject(reason);
+    return;
+  }
+  last_origin_ = scan.sensor_origin;
+  jumped_origin_.reset();
+  jump_streak_ = 0;
+
+  std::vector<perception::OrientedBox> bodies;
+  const int64_t now = core::monotonic_ns();
+  for (const auto& [id, mate] : teammates_) {
+    if (core::ns_to_s(now - mate.received_ns) <= options_.teammate_timeout_s) bodies.push_back(mate.box);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const perception::IntegrationStats stats = map_->integrate(scan, bodies);
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  ++scans_integrated_;
+  scans_->increment();
+  points_->increment(static_cast<double>(stats.points_integrated));
+  integration_seconds_->observe(elapsed);
+  if (elapsed > 0.0) points_per_second_->set(stats.points_integrated / elapsed);
+  voxel_count_->set(static_cast<double>(map_->voxel_count()));
+  auto drop = [&](const char* reason, size_t n) {
+    if (n > 0) dropped_points_->add({{"robot", robot_id_}, {"reason", reason}})->increment(static_cast<double>(n));
+  };
+  drop("non_finite", stats.dropped_non_finite);
+  drop("teammate_body", stats.dropped_teammate);
+  drop("out_of_range", stats.dropped_out_of_range);
+  drop("outside_map", stats.dropped_outside_map);
+  if (scans_integrated_ == 1) context_->set_state(v1::SERVICE_STATE_RUNNING, "");
+}
+
+void MappingService::on_team_pose(const std::string& sender, const v1::RobotPose& pose) {
+  if (sender.empty() || sender == robot_id_) return;
+  perception::OrientedBox box;
+  box.centre = vec(pose.pose().position_m());
+  const v1::Quaternion& q = pose.pose().orientation();
+  box.orientation = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z());
+  if (box.orientation.norm() < 1e-9) box.orientation = Eigen::Quaterniond::Identity();
+  box.half_extents_m = vec(pose.body_half_extents_m());
+  if (box.half_extents_m.minCoeff() <= 0.0) {
+    // No box in the message: the teammate's species body from the team file.
+    const core::RobotConfig* robot = context_->team().find_robot(sender);
+    const core::SpeciesConfig* species = robot ? context_->team().find_species(robot->species) : nullptr;
+    if (species == nullptr) return;
+    box.half_extents_m = species->body_half_extents_m;
+  }
+  if (!box.centre.allFinite() || !box.half_extents_m.allFinite()) return;
+  teammates_[sender] = Teammate{box, core::monotonic_ns()};
+}
+
+void MappingService::publish_delta(const v1::VoxelDelta& delta) {
+  context_->publisher().publish(topics::voxels(robot_id_), delta);
+  delta_voxels_->increment(delta.voxels_size());
+  delta_bytes_->increment(static_cast<double>(delta.ByteSizeLong()));
+  map_bytes_->set(static_cast<double>(map_->memory_bytes()));
+}
+
+void MappingService::publish_changes() {
+  if (!map_ || map_->pending_changes() == 0) return;
+  publish_delta(perception::to_voxel_delta(map_->take_changes(), map_->resolution(), false));
+}
+
+void MappingService::publish_full_snapshot() {
+  if (!map_ || map_->voxel_count() == 0) return;
+  map_->take_changes();  // the snapshot carries them
+  publish_delta(perception::to_voxel_delta(map_->voxels(), map_->resolution(), true));
+}
+
+void MappingService::save_map() {
+  if (!map_ || options_.map_file.empty()) return;
+  try {
+    map_->save(options_.map_file);
+  } catch (const perception::MapFileError& e) {
+    saves_failed_->increment();
+    core::LogLine(core::LogLevel::kError, "mapping") << robot_id_ << ": " << e.what();
+  }
+}
+
+}  // namespace hexplore::mapping

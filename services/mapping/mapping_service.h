@@ -1,0 +1,86 @@
+#pragma once
+// The mapping process of one robot: integrates its own LiDAR scans into the basic perception
+// map (paper "Basic Perception-Map Representation"), filters teammates' bodies out using their
+// shared poses, publishes voxel deltas to its hlmap on robot/<id>/voxels, answers snapshot
+// requests, and keeps the map on disk so a restart resumes it.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "common/metrics/registry.h"
+#include "common/perception/perception_map.h"
+#include "common/service/service.h"
+#include "hexplore/v1/pose.pb.h"
+#include "hexplore/v1/scan.pb.h"
+#include "hexplore/v1/voxels.pb.h"
+
+namespace hexplore::mapping {
+
+// Service options, from "--name value" arguments (defaults in brackets).
+struct MappingOptions {
+  double publish_period_s = 0.5;        // --publish-period-s: voxel delta period
+  double full_snapshot_period_s = 30.0; // --full-snapshot-period-s: full delta for late joiners (0: only at start)
+  std::string map_file;                 // --map-file: load at start, save on shutdown and periodically
+  double save_period_s = 60.0;          // --save-period-s (0: only on shutdown)
+  double max_pose_jump_m = 5.0;         // --max-pose-jump-m: sensor origin jump between scans
+  int reanchor_after = 10;              // --reanchor-after: consistent jumped scans accepted as a relocation
+  double teammate_timeout_s = 10.0;     // --teammate-timeout-s: older teammate poses are not filtered
+
+  // Throws std::invalid_argument naming the option.
+  static MappingOptions from_arguments(const std::map<std::string, std::string>& args);
+};
+
+class MappingService : public service::Service {
+ public:
+  core::ServiceKind kind() const override { return core::ServiceKind::kMapping; }
+  void setup(service::ServiceContext& context) override;
+  void on_shutdown(service::ServiceContext& context) override;
+  void fill_status(v1::ServiceStatus& status) override;
+
+ private:
+  struct Teammate {
+    perception::OrientedBox box;
+    int64_t received_ns = 0;
+  };
+
+  void on_scan(const std::string& sender, const v1::ScanFrame& frame);
+  void on_team_pose(const std::string& sender, const v1::RobotPose& pose);
+  // Null when the scan's pose is plausible; else the rejection reason.
+  const char* check_pose(const v1::ScanFrame& frame, const Eigen::Vector3d& origin);
+  void reject(const std::string& reason);
+  void publish_changes();
+  void publish_full_snapshot();
+  void publish_delta(const v1::VoxelDelta& delta);
+  void save_map();
+
+  service::ServiceContext* context_ = nullptr;
+  std::string robot_id_;
+  MappingOptions options_;
+  std::unique_ptr<perception::PerceptionMap> map_;
+  std::map<std::string, Teammate> teammates_;
+  std::optional<Eigen::Vector3d> last_origin_;
+  std::optional<Eigen::Vector3d> jumped_origin_;
+  int jump_streak_ = 0;
+  std::vector<float> scan_storage_;
+  uint64_t scans_integrated_ = 0;
+  uint64_t scans_rejected_ = 0;
+
+  metrics::Histogram* integration_seconds_ = nullptr;
+  metrics::Gauge* points_per_second_ = nullptr;
+  metrics::Gauge* voxel_count_ = nullptr;
+  metrics::Gauge* map_bytes_ = nullptr;
+  metrics::Counter* scans_ = nullptr;
+  metrics::Counter* points_ = nullptr;
+  metrics::CounterFamily* rejected_ = nullptr;
+  metrics::CounterFamily* dropped_points_ = nullptr;
+  metrics::Counter* delta_voxels_ = nullptr;
+  metrics::Counter* delta_bytes_ = nullptr;
+  metrics::Counter* saves_failed_ = nullptr;
+};
+
+}  // namespace hexplore::mapping
