@@ -475,4 +475,19 @@ SegmentationChange SupervoxelSegmenter::update(std::span<const VoxelSample> voxe
   return change;
 }
 
+SegmentationChange SupervoxelSegmenter::replace_all(std::span<const VoxelSample> voxels) {
+  std::unordered_set<uint64_t> keep;
+  keep.reserve(voxels.size());
+  for (const VoxelSample& v : voxels)
+    if (!v.removed()) keep.insert(voxel_key(v.key));
+  std::vector<VoxelSample> all(voxels.begin(), voxels.end());
+  voxels_.for_each([&](uint64_t key, const VoxelRec& rec) {
+    if (keep.count(key) != 0) return;
+    VoxelSample gone = rec.sample;
+    gone.flags |= kVoxelRemoved;
+    all.push_back(gone);
+  });
+  return update(all);
+}
+
 }  // namespace hexplore::highlevel

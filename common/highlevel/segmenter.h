@@ -50,6 +50,9 @@ class SupervoxelSegmenter {
 
   // Applies voxel samples (new, changed or removed voxels) and re-segments what they touch.
   SegmentationChange update(std::span<const VoxelSample> voxels);
+  // Makes `voxels` the whole voxel set (a full-snapshot VoxelDelta): voxels not in it are
+  // removed, in the same single incremental update.
+  SegmentationChange replace_all(std::span<const VoxelSample> voxels);
 
   const std::unordered_map<uint64_t, Supervoxel>& supervoxels() const { return supervoxels_; }
   const Supervoxel* find(uint64_t key) const;

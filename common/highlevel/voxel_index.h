@@ -40,10 +40,10 @@ class VoxelIndex {
     if (!free_.empty()) {
       slot = free_.back();
       free_.pop_back();
-      records_[slot] = Entry{key, Record{}};
+      records_[slot] = Entry{key, Record{}, true};
     } else {
       slot = static_cast<int32_t>(records_.size());
-      records_.push_back(Entry{key, Record{}});
+      records_.push_back(Entry{key, Record{}, true});
     }
     ++b->count;
     ++size_;
@@ -68,6 +68,13 @@ class VoxelIndex {
 
   size_t size() const { return size_; }
 
+  // Calls f(key, record) for every stored voxel (storage order).
+  template <typename F>
+  void for_each(F&& f) const {
+    for (const Entry& e : records_)
+      if (e.used) f(e.key, e.record);
+  }
+
  private:
   struct Brick {
     std::array<int32_t, 512> slots;
@@ -76,6 +83,7 @@ class VoxelIndex {
   struct Entry {
     uint64_t key = 0;
     Record record{};
+    bool used = false;
   };
   static uint64_t brick_key(uint64_t key) {
     constexpr uint64_t kMask = (uint64_t{1} << 21) - 1;

@@ -204,6 +204,18 @@ TEST(Segmenter, IncrementalUpdatesMatchFullSegmentation) {
   expect_same(fresh, seg);
 }
 
+TEST(Segmenter, ReplaceAllDropsVoxelsMissingFromASnapshot) {
+  auto voxels = campus_voxels(small_campus());
+  SupervoxelSegmenter seg({}, kLevels);
+  seg.update(voxels);
+  const std::vector<VoxelSample> half(voxels.begin(), voxels.begin() + voxels.size() / 2);
+  seg.replace_all(half);
+  SupervoxelSegmenter fresh({}, kLevels);
+  fresh.update(half);
+  EXPECT_EQ(seg.voxel_count(), half.size());
+  expect_same(fresh, seg);
+}
+
 TEST(Segmenter, ReportsChangesThatReproduceTheMap) {
   // Replaying the reported changes must rebuild exactly the segmenter's map.
   const auto voxels = campus_voxels(small_campus());
