@@ -22,9 +22,13 @@ EventLoop::~EventLoop() { close(wake_fd_); }
 
 void EventLoop::add(Pollable& socket) {
   if (std::find(sockets_.begin(), sockets_.end(), &socket) == sockets_.end()) sockets_.push_back(&socket);
+  items_dirty_ = true;
 }
 
-void EventLoop::remove(Pollable& socket) { sockets_.erase(std::remove(sockets_.begin(), sockets_.end(), &socket), sockets_.end()); }
+void EventLoop::remove(Pollable& socket) {
+  sockets_.erase(std::remove(sockets_.begin(), sockets_.end(), &socket), sockets_.end());
+  items_dirty_ = true;
+}
 
 EventLoop::TimerId EventLoop::add_timer(std::chrono::nanoseconds period, std::function<void()> fn) {
   if (period.count() <= 0) throw std::invalid_argument("transport: timer period must be > 0");
@@ -86,16 +90,19 @@ void EventLoop::iterate(int64_t max_wait_ns) {
     if (auto deadline = p->next_deadline_ns()) wait_ns = std::min(wait_ns, *deadline - now);
   wait_ns = std::max<int64_t>(wait_ns, 0);
 
-  std::vector<zmq::pollitem_t> items;
-  std::vector<Pollable*> readers;
-  items.reserve(sockets_.size() + 1);
-  items.push_back(zmq::pollitem_t{nullptr, wake_fd_, ZMQ_POLLIN, 0});
-  for (Pollable* p : sockets_) {
-    if (zmq::socket_t* s = p->input_socket()) {
-      items.push_back(zmq::pollitem_t{static_cast<void*>(*s), 0, ZMQ_POLLIN, 0});
-      readers.push_back(p);
+  if (items_dirty_) {
+    items_.clear();
+    readers_.clear();
+    items_.push_back(zmq_pollitem_t{nullptr, wake_fd_, ZMQ_POLLIN, 0});
+    for (Pollable* p : sockets_) {
+      if (zmq::socket_t* s = p->input_socket()) {
+        items_.push_back(zmq_pollitem_t{static_cast<void*>(*s), 0, ZMQ_POLLIN, 0});
+        readers_.push_back(p);
+      }
     }
+    items_dirty_ = false;
   }
+  std::vector<zmq_pollitem_t>& items = items_;
   // Round up to whole milliseconds (zmq::poll's unit) so that a timer is never polled early in a busy loop.
   const auto timeout = std::chrono::milliseconds((wait_ns + 999'999) / 1'000'000);
   try {
@@ -112,13 +119,15 @@ void EventLoop::iterate(int64_t max_wait_ns) {
     uint64_t value = 0;
     [[maybe_unused]] ssize_t n = read(wake_fd_, &value, sizeof(value));
   }
+  // A callback that adds or removes a socket marks the poll set dirty; the rest of this round
+  // is then skipped (ZeroMQ readiness is level-triggered, so nothing is lost, only deferred).
   run_posted();
-  for (size_t i = 0; i < readers.size() && !stop_.load(); ++i)
-    if (items[i + 1].revents & ZMQ_POLLIN) readers[i]->drain(256);
+  for (size_t i = 0; i < readers_.size() && !stop_.load() && !items_dirty_; ++i)
+    if (items[i + 1].revents & ZMQ_POLLIN) readers_[i]->drain(256);
   if (stop_.load()) return;
   now = core::monotonic_ns();
-  for (Pollable* p : std::vector<Pollable*>(sockets_))
-    if (auto deadline = p->next_deadline_ns(); deadline && *deadline <= now) p->on_deadline(now);
+  for (size_t i = 0; i < sockets_.size() && !items_dirty_; ++i)
+    if (auto deadline = sockets_[i]->next_deadline_ns(); deadline && *deadline <= now) sockets_[i]->on_deadline(now);
   run_timers(now);
 }
 

@@ -11,6 +11,8 @@
 #include <mutex>
 #include <vector>
 
+#include <zmq.h>
+
 #include "common/transport/pollable.h"
 
 namespace hexplore::transport {
@@ -60,6 +62,10 @@ class EventLoop {
   void run_timers(int64_t now_ns);
 
   std::vector<Pollable*> sockets_;
+  // Poll set rebuilt only when sockets are added or removed: [wake fd, input sockets...].
+  std::vector<zmq_pollitem_t> items_;
+  std::vector<Pollable*> readers_;
+  bool items_dirty_ = true;
   std::map<TimerId, Timer> timers_;
   TimerId next_timer_id_ = 1;
   std::atomic<bool> stop_{false};
