@@ -151,7 +151,10 @@ DetourResult detour_around(const Path& input, std::vector<ObstacleBox> boxes, co
       result.path = path;
       return result;
     }
-    const size_t before = entry == 0 ? 0 : entry - 1;
+    size_t before = entry == 0 ? 0 : entry - 1;
+    // A detour that starts just ahead of the robot starts at the robot instead: otherwise a
+    // route that turns back would make the robot step forward and back on the spot.
+    if (samples[before].s_m <= options.start_snap_m && resume_s == 0.0) before = 0;
     size_t exit = entry;
     while (exit < samples.size() && any_contains(boxes, samples[exit].point.head<2>())) ++exit;
     std::vector<Eigen::Vector2d> route;
@@ -159,6 +162,17 @@ DetourResult detour_around(const Path& input, std::vector<ObstacleBox> boxes, co
     const bool reachable = round + 1 < options.max_detours && exit < samples.size() &&
                            shortest_route(boxes, samples[before].point.head<2>(), samples[exit].point.head<2>(),
                                           options.clearance_m, route);
+    if (reachable && before > 0 && resume_s == 0.0 && !route.empty()) {
+      // A route that turns back at its start is better begun at the robot (no U-turn).
+      const Eigen::Vector2d ahead = direction_at(path, samples[before].s_m).head<2>();
+      std::vector<Eigen::Vector2d> from_start;
+      if (ahead.dot(route.front() - samples[before].point.head<2>()) < 0.0 &&
+          shortest_route(boxes, samples[0].point.head<2>(), samples[exit].point.head<2>(), options.clearance_m,
+                         from_start)) {
+        before = 0;
+        route = std::move(from_start);
+      }
+    }
     if (!reachable) {
       result.blocked = true;
       result.blocked_by = boxes[box_index].robot_id;

@@ -28,6 +28,7 @@ struct DetourOptions {
   double clearance_m = 0.2;       // detour waypoints lie this far outside the box corners
   double sample_step_m = 0.05;    // resolution of the box-entry search along the path
   int max_detours = 8;            // boxes handled one after another along the path
+  double start_snap_m = 0.5;      // a detour starting this close to the robot starts at the robot
 };
 
 struct DetourResult {

@@ -61,10 +61,49 @@ ConflictResolver::ConflictResolver(std::string robot_id, const Eigen::Vector3d& 
 
 void ConflictResolver::reset() {
   yields_.clear();
+  give_way_to_.clear();
+  wanted_near_.clear();
   conflicting_.clear();
   stationary_ = true;
   was_detoured_ = false;
   last_ = Decision{};
+}
+
+std::string ConflictResolver::lowest_in_wait_cycle(const std::string& first,
+                                                   const std::vector<const Fragment*>& peers) const {
+  std::string lowest = robot_id_;
+  std::string current = first;
+  for (size_t hops = 0; hops <= peers.size(); ++hops) {
+    if (current == robot_id_) return lowest;
+    lowest = std::min(lowest, current);
+    const auto it = std::find_if(peers.begin(), peers.end(), [&](const Fragment* p) { return p->robot_id == current; });
+    if (it == peers.end() || (*it)->yielding_to.empty()) return "";
+    current = (*it)->yielding_to;
+  }
+  return "";
+}
+
+std::optional<Eigen::Vector3d> ConflictResolver::find_room(const Eigen::Vector3d& position, const Fragment& blocked,
+                                                         const std::vector<ObstacleBox>& boxes) const {
+  // Clear of the wanted path and of its straight continuation: stepping aside along the other
+  // robot's way would only move the obstacle further down its path.
+  const auto wanted = sample_path(extend_path(blocked.path(), options_.eta_p_m), options_.sample_step_m);
+  const double clear = radius_m_ + blocked.body_radius_m() + options_.conflict_margin_m;
+  // Nearest spot first; directions in a fixed order, so the choice is deterministic.
+  for (double distance = 1.0; distance <= 4.0 + 1e-9; distance += 0.5) {
+    for (int k = 0; k < 16; ++k) {
+      const double angle = 2.0 * M_PI * k / 16.0;
+      const Eigen::Vector3d spot = position + distance * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
+      bool ok = true;
+      for (const auto& w : wanted) ok = ok && distance_xy(w.point, spot) > clear;
+      if (!ok) continue;
+      // Reachable in a straight line without entering another robot's box (the one being
+      // made room for is left behind, so a box containing the start is shrunk as in detours).
+      const DetourResult reach = detour_around({position, spot}, boxes, DetourOptions{});
+      if (!reach.detoured && !reach.blocked) return spot;
+    }
+  }
+  return std::nullopt;
 }
 
 Decision ConflictResolver::stop(std::string reason, std::string yielding_to) {
@@ -119,8 +158,35 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
     detour_path_ = detour.path;
     detour_for_ = desired_path;
   }
-  const Path& candidate = detour.path;
+  Path candidate = detour.path;
   if (detour.blocked) ++counters_.blocked;
+  // A blocked robot shows teammates where it wants to go (they may have to make room).
+  wanted_near_ = detour.blocked ? truncate_to_length(base, options_.eta_p_m) : Path{};
+
+  // Two robots standing in each other's way (each blocked by the other's box, e.g. each on the
+  // other's goal): the higher id makes room by stepping aside off the other's wanted path.
+  std::string giving_way_to;
+  if (!give_way_to_.empty()) {
+    const auto it = std::find_if(peers.begin(), peers.end(), [&](const Fragment* p) { return p->robot_id == give_way_to_; });
+    // Step aside all the way first: released halfway, the robot would stand in the way again.
+    const bool at_spot = distance_xy(position, give_way_spot_) < options_.min_move_m;
+    if (it == peers.end() || (at_spot && (*it)->yielding_to != robot_id_)) give_way_to_.clear();
+  }
+  if (give_way_to_.empty() && detour.blocked) {
+    const auto it = std::find_if(peers.begin(), peers.end(), [&](const Fragment* p) { return p->robot_id == detour.blocked_by; });
+    if (it != peers.end() && (*it)->stationary && (*it)->yielding_to == robot_id_ && (*it)->robot_id < robot_id_) {
+      if (auto spot = find_room(position, **it, boxes)) {
+        give_way_to_ = (*it)->robot_id;
+        give_way_spot_ = *spot;
+        ++counters_.give_ways;
+      }
+    }
+  }
+  if (!give_way_to_.empty()) {
+    giving_way_to = give_way_to_;
+    candidate = {position, give_way_spot_};
+    wanted_near_.clear();
+  }
 
   // Collision avoidance against moving teammates (and stopped ones this robot still waits for).
   const Path near = truncate_to_length(candidate, options_.eta_p_m + options_.extrapolate_m);
@@ -131,7 +197,8 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
   for (const Fragment* p : peers) {
     auto record = yields_.find(p->robot_id);
     if (p->stationary && record == yields_.end()) continue;
-    Path peer_path = p->path();
+    // A stopped robot occupies only its place, whatever it would like to do next.
+    Path peer_path = p->stationary ? Path{p->position_m} : p->path();
     // A fragment as long as eta_p was cut there: the peer's path goes on beyond it.
     if (!p->stationary && path_length(peer_path) >= options_.eta_p_m - 0.05) {
       peer_path = extend_path(peer_path, options_.extrapolate_m);
@@ -148,15 +215,23 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
     bool yield = false;
     if (record != yields_.end()) {
       yield = true;
-      if (p->yielding_to == robot_id_) {
-        // Both wait for each other: the lower id goes, the other keeps waiting.
-        if (robot_id_ < p->robot_id) {
+      const std::string lowest = lowest_in_wait_cycle(p->robot_id, peers);
+      // A stopped robot that shows a wanted path and waits for this one is blocked by this
+      // robot's box: it cannot move first, so this robot must.
+      const bool blocked_by_me = p->stationary && p->yielding_to == robot_id_ && !p->waypoints_m.empty();
+      if (blocked_by_me) {
+        yield = false;
+        ++counters_.deadlock_breaks;
+      } else if (!lowest.empty()) {
+        // Waiting in a circle (two robots waiting for each other, or more): the lowest id in
+        // the circle goes, the others keep waiting. Every member sees the same circle.
+        if (lowest == robot_id_) {
           yield = false;
           ++counters_.deadlock_breaks;
         }
-      } else if (p->stationary && p->yielding_to.empty() && now_s - record->second.since_s > options_.deadlock_timeout_s) {
-        // The robot waited for has stopped for good reasons of its own (blocked, scanning):
-        // stop waiting and drive around it as an obstacle.
+      } else if (p->stationary && now_s - record->second.since_s > options_.deadlock_timeout_s) {
+        // The robot waited for has stopped for reasons of its own (blocked elsewhere, scanning,
+        // waiting further down a chain): stop waiting and drive around it as an obstacle.
         yield = false;
         ++counters_.deadlock_breaks;
       }
@@ -205,7 +280,14 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
 
   Path approved = std::isfinite(limit_s) ? truncate_to_length(candidate, limit_s) : candidate;
   std::string reason = limit_reason;
-  if (reason.empty() && detour.blocked) reason = "blocked by stationary robot " + detour.blocked_by;
+  if (reason.empty() && !giving_way_to.empty()) {
+    reason = "giving way to " + giving_way_to;
+    yielding_to = giving_way_to;
+  }
+  if (reason.empty() && detour.blocked) {
+    reason = "blocked by stationary robot " + detour.blocked_by;
+    yielding_to = detour.blocked_by;  // waits for it: lets wait cycles be seen by everyone
+  }
   if (path_length(approved) < options_.min_move_m) {
     if (reason.empty()) reason = "no room to move";
     Decision d = stop(std::move(reason), yielding_to);
@@ -231,10 +313,9 @@ Fragment ConflictResolver::fragment(const Eigen::Vector3d& position) const {
   f.position_m = position;
   f.stationary = last_.kind == DecisionKind::kStop;
   f.speed_mps = f.stationary ? 0.0 : last_.speed_mps;
-  if (!f.stationary) {
-    const Path near = truncate_to_length(remaining_path(position, last_.waypoints), options_.eta_p_m);
-    f.waypoints_m.assign(near.begin() + (near.size() > 1 ? 1 : 0), near.end());
-  }
+  // Moving: the approved path ahead. Stopped and blocked: the path it is waiting to drive.
+  const Path near = f.stationary ? wanted_near_ : truncate_to_length(remaining_path(position, last_.waypoints), options_.eta_p_m);
+  if (!near.empty()) f.waypoints_m.assign(near.begin() + 1, near.end());
   body_box_any_yaw(position, half_extents_m_, f.box_min_m, f.box_max_m);
   f.yielding_to = last_.yielding_to;
   return f;

@@ -6,12 +6,14 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "common/safety/box_detour.h"
 #include "common/safety/conflict.h"
 #include "common/safety/fragment.h"
 #include "common/safety/polyline.h"
@@ -53,8 +55,9 @@ struct ResolverCounters {
   uint64_t conflicts_detected = 0;   // peer conflicts that newly appeared
   uint64_t yields = 0;               // times this robot started yielding to a peer
   uint64_t detours = 0;              // times a detour around a stopped peer began
-  uint64_t deadlock_breaks = 0;      // yields ended by the mutual-wait or timeout rules
+  uint64_t deadlock_breaks = 0;      // yields ended by the wait-cycle or timeout rules
   uint64_t blocked = 0;              // decisions cut short before an impassable box
+  uint64_t give_ways = 0;            // times this robot stepped aside for a blocked teammate
 };
 
 class ConflictResolver {
@@ -85,6 +88,12 @@ class ConflictResolver {
   };
 
   Decision stop(std::string reason, std::string yielding_to);
+  // A spot 1-4 m away, clear of `blocked`'s wanted path and reachable in a straight line.
+  std::optional<Eigen::Vector3d> find_room(const Eigen::Vector3d& position, const Fragment& blocked,
+                                           const std::vector<ObstacleBox>& boxes) const;
+  // Follows "waits for" from `first` through the peers; when the chain leads back to this
+  // robot, returns the lowest id on the circle, else "".
+  std::string lowest_in_wait_cycle(const std::string& first, const std::vector<const Fragment*>& peers) const;
 
   std::string robot_id_;
   Eigen::Vector3d half_extents_m_;
@@ -96,6 +105,9 @@ class ConflictResolver {
   bool was_detoured_ = false;
   Path detour_path_;                            // the detour being followed
   Path detour_for_;                             // the desired path it was made for
+  Path wanted_near_;                            // near desired path while blocked (shared)
+  std::string give_way_to_;                     // teammate this robot is making room for
+  Eigen::Vector3d give_way_spot_ = Eigen::Vector3d::Zero();
   Decision last_;
   ResolverCounters counters_;
 };

@@ -146,6 +146,39 @@ TEST(Resolver, GoalOccupiedByAStoppedRobotStopsBeforeIt) {
   EXPECT_EQ(at_box.kind, DecisionKind::kStop);
 }
 
+TEST(Resolver, BlockedRobotSharesWhereItWantsToGoAndWhomItWaitsFor) {
+  ConflictResolver r("a", kHalf, SafetyOptions{});
+  const Path plan{V(-5, 0, 0), V(0, 0, 0)};
+  r.decide(V(-1.3, 0, 0), plan, 0.5, {standing("c", V(0, 0, 0))}, 0.0);
+  const Fragment f = r.fragment(V(-1.3, 0, 0));
+  EXPECT_TRUE(f.stationary);
+  EXPECT_EQ(f.yielding_to, "c");
+  ASSERT_FALSE(f.waypoints_m.empty());
+  EXPECT_TRUE(f.waypoints_m.back().isApprox(V(0, 0, 0)));
+}
+
+TEST(Resolver, HigherIdStepsAsideForALowerIdItBlocksWhileBlockedByIt) {
+  ConflictResolver b("b", kHalf, SafetyOptions{});
+  const Path plan{V(2.5, 0, 0), V(0, 0, 0)};
+  Fragment a = standing("a", V(0, 0, 0), "b");
+  a.waypoints_m = {V(2.5, 0, 0)};
+  const auto d = b.decide(V(2.5, 0, 0), plan, 0.5, {a}, 0.0);
+  ASSERT_EQ(d.kind, DecisionKind::kFollow);
+  EXPECT_EQ(d.yielding_to, "a");
+  EXPECT_NE(d.reason.find("giving way to a"), std::string::npos);
+  EXPECT_EQ(b.counters().give_ways, 1u);
+  // The spot is off a's wanted path (and its continuation) by more than both bodies.
+  const V spot = d.waypoints.back();
+  EXPECT_GT(std::abs(spot.y()), 2 * body_radius_of(kHalf));
+  EXPECT_LT(distance_xy(spot, V(2.5, 0, 0)), 4.0 + 1e-9);
+  // The lower id never steps aside.
+  ConflictResolver a_resolver("a", kHalf, SafetyOptions{});
+  Fragment b_frag = standing("b", V(2.5, 0, 0), "a");
+  b_frag.waypoints_m = {V(0, 0, 0)};
+  a_resolver.decide(V(0, 0, 0), {V(0, 0, 0), V(2.5, 0, 0)}, 0.5, {b_frag}, 0.0);
+  EXPECT_EQ(a_resolver.counters().give_ways, 0u);
+}
+
 TEST(Resolver, OptionsAreValidated) {
   SafetyOptions bad;
   bad.eta_p_m = -1;
