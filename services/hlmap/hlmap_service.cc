@@ -1,0 +1,235 @@
+#include "services/hlmap/hlmap_service.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "common/core/clock.h"
+#include "common/core/config_error.h"
+#include "common/core/log.h"
+#include "common/highlevel/proto_convert.h"
+#include "common/transport/topics.h"
+
+namespace hexplore::hlmap {
+namespace {
+
+namespace topics = transport::topics;
+
+class Stopwatch {
+ public:
+  double seconds() const { return core::ns_to_s(core::monotonic_ns() - start_); }
+
+ private:
+  int64_t start_ = core::monotonic_ns();
+};
+
+}  // namespace
+
+double HlmapService::now_s() const { return core::ns_to_s(core::monotonic_ns()); }
+
+void HlmapService::setup(service::ServiceContext& context) {
+  context_ = &context;
+  robot_id_ = context.robot_id();
+  const auto& team = context.team();
+  if (context.robot() == nullptr) {
+    throw core::ConfigError(team.source_file, "robots", "hlmap: '" + robot_id_ + "' is not a robot of the team");
+  }
+  levels_ = highlevel::species_levels(team);
+  if (levels_.empty()) throw core::ConfigError(team.source_file, "species", "hlmap: the team has no species");
+  params_.resolution_m = team.params.map_resolution_m;
+  params_.eta_s_m = team.params.eta_s_m;
+  params_.eta_e_m = team.params.eta_e_m;
+  try {
+    params_.validate();
+  } catch (const std::invalid_argument& e) {
+    throw core::ConfigError(team.source_file, "params", std::string("hlmap: ") + e.what());
+  }
+  segmenter_ = std::make_unique<highlevel::SupervoxelSegmenter>(params_, levels_);
+  log_ = std::make_unique<highlevel::ContributionLog>(robot_id_);
+  fusion_ = std::make_unique<highlevel::MapFusion>(levels_);
+  repair_timeout_s_ = std::max(0.5, 2.0 * team.params.eta_c_s);
+  sync_ = std::make_unique<highlevel::PeerSync>(robot_id_, repair_timeout_s_);
+
+  auto& m = context.metrics();
+  const metrics::Labels labels{{"robot", robot_id_}};
+  const auto buckets = metrics::latency_buckets_s();
+  metrics_.segmentation_s =
+      m.histogram_family("hexplore_hlmap_segmentation_seconds", "Supervoxel segmentation time per voxel delta", buckets)
+          ->add(labels);
+  metrics_.topology_s = m.histogram_family("hexplore_hlmap_topology_update_seconds",
+                                           "Own contribution fused into the map and topology graph per window", buckets)
+                            ->add(labels);
+  metrics_.fusion_s =
+      m.histogram_family("hexplore_hlmap_fusion_seconds", "Fusion of one peer increment or snapshot", buckets)
+          ->add(labels);
+  auto gauge = [&](const std::string& name, const std::string& help, const metrics::Labels& l) {
+    return m.gauge_family(name, help)->add(l);
+  };
+  metrics_.supervoxels = gauge("hexplore_hlmap_supervoxels", "Supervoxels in the fused map", labels);
+  metrics_.own_supervoxels = gauge("hexplore_hlmap_own_supervoxels", "Supervoxels this robot segmented", labels);
+  metrics_.edges = gauge("hexplore_hlmap_edges", "Topology edges in the fused map", labels);
+  metrics_.graph_vertices = gauge("hexplore_hlmap_graph_vertices", "Traversable vertices of the topology graph", labels);
+  metrics_.voxels = gauge("hexplore_hlmap_voxels", "Perception voxels held by the segmenter", labels);
+  auto window_bytes = [&](std::string_view topic) {
+    return gauge("hexplore_hlmap_window_bytes", "Bytes sent in the last eta_c window, by topic",
+                 {{"robot", robot_id_}, {"topic", std::string(topic)}});
+  };
+  metrics_.window_bytes_team_map = window_bytes(topics::kTeamMap);
+  metrics_.window_bytes_hlmap = window_bytes(topics::kHlmap);
+  metrics_.window_bytes_snapshots = window_bytes("repair");
+  auto counter = [&](const std::string& name, const std::string& help) { return m.counter_family(name, help)->add(labels); };
+  metrics_.gaps_detected = counter("hexplore_hlmap_gaps_detected_total", "Gaps in peers' increment sequences");
+  metrics_.gaps_repaired = counter("hexplore_hlmap_gaps_repaired_total", "Gaps closed by a repair snapshot");
+  metrics_.repair_requests = counter("hexplore_hlmap_repair_requests_total", "MapRepairRequests sent to peers");
+  metrics_.snapshots_served = counter("hexplore_hlmap_snapshots_served_total", "MapSnapshots served to peers");
+  metrics_.bad_deltas = counter("hexplore_hlmap_bad_voxel_deltas_total", "Voxel deltas dropped (wrong resolution)");
+
+  // Own mapping's voxels; every peer's hlmap for team/map.
+  context.connect(robot_id_, core::ServiceKind::kMapping);
+  for (const auto& robot : team.robots) {
+    if (robot.id == robot_id_) continue;
+    context.connect(robot.id, core::ServiceKind::kHlmap);
+    sync_->want_snapshot(robot.id);  // a (re)started hlmap fetches what it missed
+  }
+  auto& sub = context.subscriber();
+  sub.on<v1::VoxelDelta>(topics::voxels(robot_id_),
+                         [this](const transport::Received<v1::VoxelDelta>& r) { on_voxels(r.message); });
+  sub.on<v1::MapIncrement>(std::string(topics::kTeamMap), [this](const transport::Received<v1::MapIncrement>& r) {
+    if (r.header.robot_id() == robot_id_ || r.message.source_robot() == robot_id_) return;
+    on_increment(r.message);
+  });
+  context.responder().serve<v1::MapRepairRequest, v1::MapSnapshot>(
+      [this](const transport::Received<v1::MapRepairRequest>& r) { return serve_repair(r.message); });
+  context.responder().serve<v1::FusedMapRequest, v1::FusedMapUpdate>(
+      [this](const transport::Received<v1::FusedMapRequest>& r) { return serve_fused(r.message); });
+
+  const auto period = std::chrono::duration_cast<std::chrono::nanoseconds>(
+      std::chrono::duration<double>(team.params.eta_c_s));
+  context.loop().add_timer(period, [this] { window(); });
+  context.set_state(v1::SERVICE_STATE_RUNNING, "waiting for voxels");
+}
+
+void HlmapService::on_voxels(const v1::VoxelDelta& delta) {
+  if (std::abs(delta.resolution_m() - params_.resolution_m) > 1e-9 * params_.resolution_m) {
+    metrics_.bad_deltas->increment();
+    core::LogLine(core::LogLevel::kWarn, "hlmap")
+        << robot_id_ << ": voxel delta at resolution " << delta.resolution_m() << " m dropped (map resolution "
+        << params_.resolution_m << " m)";
+    return;
+  }
+  const auto samples = highlevel::voxel_samples(delta);
+  const Stopwatch watch;
+  const auto change = delta.full_snapshot() ? segmenter_->replace_all(samples) : segmenter_->update(samples);
+  metrics_.segmentation_s->observe(watch.seconds());
+  log_->record(*segmenter_, change);
+  metrics_.voxels->set(static_cast<double>(segmenter_->voxel_count()));
+  metrics_.own_supervoxels->set(static_cast<double>(segmenter_->supervoxels().size()));
+}
+
+void HlmapService::apply_ready(std::vector<highlevel::SourcedUpdate> ready) {
+  for (const auto& u : ready) {
+    const Stopwatch watch;
+    fusion_->apply(u.source, u.update);
+    metrics_.fusion_s->observe(watch.seconds());
+  }
+  const auto& stats = sync_->stats();
+  metrics_.gaps_detected->increment(static_cast<double>(stats.gaps_detected - reported_.gaps_detected));
+  metrics_.gaps_repaired->increment(static_cast<double>(stats.gaps_repaired - reported_.gaps_repaired));
+  metrics_.repair_requests->increment(static_cast<double>(stats.repair_requests - reported_.repair_requests));
+  reported_ = stats;
+}
+
+void HlmapService::on_increment(const v1::MapIncrement& increment) {
+  apply_ready(sync_->on_increment(highlevel::from_proto(increment)));
+}
+
+void HlmapService::on_snapshot(const v1::MapSnapshot& snapshot) {
+  apply_ready(sync_->on_snapshot(highlevel::from_proto(snapshot)));
+}
+
+v1::MapSnapshot HlmapService::serve_repair(const v1::MapRepairRequest& request) {
+  v1::MapSnapshot reply;
+  if (request.source_robot() == robot_id_) {
+    // Always the whole contribution: increments carry absolute state, so a snapshot repairs
+    // any gap and needs no history of past increments.
+    reply = highlevel::to_snapshot(log_->snapshot(), log_->contribution());
+  } else if (const auto* c = fusion_->contribution(request.source_robot());
+             c != nullptr && sync_->in_sync(request.source_robot())) {
+    // Relay a teammate's contribution we hold completely (helps when the source is out of reach).
+    highlevel::SourcedUpdate relay{request.source_robot(), sync_->applied_seq(request.source_robot()), c->snapshot()};
+    reply = highlevel::to_snapshot(relay, *c);
+  }
+  metrics_.snapshots_served->increment();
+  window_snapshot_bytes_ += reply.ByteSizeLong();
+  return reply;
+}
+
+v1::FusedMapUpdate HlmapService::serve_fused(const v1::FusedMapRequest&) {
+  highlevel::MapUpdate all = fusion_->map().snapshot();
+  all.version = fused_version_;
+  return highlevel::to_fused_update(all, fusion_->map());
+}
+
+void HlmapService::window() {
+  // 1. Own contribution: publish this window's increment (a heartbeat when empty) and fuse it.
+  const auto inc = log_->take_increment();
+  const Stopwatch watch;
+  fusion_->apply(robot_id_, inc.update);
+  metrics_.topology_s->observe(watch.seconds());
+  const v1::MapIncrement message = highlevel::to_increment(inc, log_->contribution());
+  context_->publisher().publish(topics::kTeamMap, message);
+  metrics_.window_bytes_team_map->set(static_cast<double>(message.ByteSizeLong()));
+
+  // 2. Repairs that are due.
+  for (const auto& req : sync_->due_requests(now_s())) {
+    v1::MapRepairRequest request;
+    request.set_source_robot(req.source);
+    request.set_from_seq(req.from_seq);
+    context_->requester(req.source, core::ServiceKind::kHlmap)
+        .request<v1::MapRepairRequest, v1::MapSnapshot>(
+            request,
+            [this, source = req.source](const transport::Received<v1::MapSnapshot>* reply) {
+              if (reply == nullptr || reply->message.source_robot() != source) return;  // timeout: asked again later
+              on_snapshot(reply->message);
+            },
+            std::chrono::milliseconds(static_cast<int64_t>(repair_timeout_s_ * 1000)));
+  }
+  apply_ready({});
+
+  // 3. Fused changes for this robot's planning.
+  highlevel::MapUpdate changes = fusion_->take_changes();
+  size_t hlmap_bytes = 0;
+  if (!changes.empty()) {
+    changes.version = ++fused_version_;
+    const v1::FusedMapUpdate update = highlevel::to_fused_update(changes, fusion_->map());
+    context_->publisher().publish(topics::hlmap(robot_id_), update);
+    hlmap_bytes = update.ByteSizeLong();
+  }
+  metrics_.window_bytes_hlmap->set(static_cast<double>(hlmap_bytes));
+  metrics_.window_bytes_snapshots->set(static_cast<double>(window_snapshot_bytes_));
+  window_snapshot_bytes_ = 0;
+
+  const auto& map = fusion_->map();
+  metrics_.supervoxels->set(static_cast<double>(map.size()));
+  metrics_.edges->set(static_cast<double>(map.edges().size()));
+  metrics_.graph_vertices->set(static_cast<double>(map.graph().vertex_count()));
+  if (map.size() > 0) context_->set_state(v1::SERVICE_STATE_RUNNING);
+}
+
+void HlmapService::fill_status(v1::ServiceStatus& status) {
+  auto add = [&](const char* name, double value) {
+    v1::StatusValue* v = status.add_values();
+    v->set_name(name);
+    v->set_value(value);
+  };
+  const auto& map = fusion_->map();
+  add("supervoxels", static_cast<double>(map.size()));
+  add("edges", static_cast<double>(map.edges().size()));
+  add("graph_vertices", static_cast<double>(map.graph().vertex_count()));
+  add("own_supervoxels", static_cast<double>(segmenter_->supervoxels().size()));
+  add("fused_version", static_cast<double>(fused_version_));
+  add("own_increment_seq", static_cast<double>(log_->seq()));
+  add("gaps_detected", static_cast<double>(sync_->stats().gaps_detected));
+  add("gaps_repaired", static_cast<double>(sync_->stats().gaps_repaired));
+}
+
+}  // namespace hexplore::hlmap

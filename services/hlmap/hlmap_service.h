@@ -1,0 +1,72 @@
+#pragma once
+// hexplore_hlmap: one robot's high-level map process. It segments its own perception map
+// (robot/<id>/voxels) into supervoxels and topology edges, publishes its contribution
+// incrementally on team/map every eta_c, fuses its peers' contributions (repairing losses by
+// MapRepairRequest -> MapSnapshot), and serves the fused map to its own planning: a
+// FusedMapRequest snapshot, then FusedMapUpdate increments on robot/<id>/hlmap.
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "common/highlevel/contribution_log.h"
+#include "common/highlevel/map_fusion.h"
+#include "common/highlevel/peer_sync.h"
+#include "common/highlevel/segmenter.h"
+#include "common/service/service.h"
+#include "hexplore/v1/hlmap.pb.h"
+#include "hexplore/v1/voxels.pb.h"
+
+namespace hexplore::hlmap {
+
+class HlmapService : public service::Service {
+ public:
+  core::ServiceKind kind() const override { return core::ServiceKind::kHlmap; }
+  void setup(service::ServiceContext& context) override;
+  void fill_status(v1::ServiceStatus& status) override;
+
+ private:
+  void on_voxels(const v1::VoxelDelta& delta);
+  void on_increment(const v1::MapIncrement& increment);
+  void on_snapshot(const v1::MapSnapshot& snapshot);
+  void apply_ready(std::vector<highlevel::SourcedUpdate> ready);
+  v1::MapSnapshot serve_repair(const v1::MapRepairRequest& request);
+  v1::FusedMapUpdate serve_fused(const v1::FusedMapRequest& request);
+  void window();
+  double now_s() const;
+
+  service::ServiceContext* context_ = nullptr;
+  std::string robot_id_;
+  highlevel::SegmenterParams params_;
+  std::vector<int> levels_;
+  std::unique_ptr<highlevel::SupervoxelSegmenter> segmenter_;
+  std::unique_ptr<highlevel::ContributionLog> log_;
+  std::unique_ptr<highlevel::MapFusion> fusion_;
+  std::unique_ptr<highlevel::PeerSync> sync_;
+  uint64_t fused_version_ = 0;
+  double repair_timeout_s_ = 2.0;
+  size_t window_team_bytes_ = 0;
+  size_t window_snapshot_bytes_ = 0;
+
+  struct Metrics {
+    metrics::Histogram* segmentation_s = nullptr;
+    metrics::Histogram* topology_s = nullptr;
+    metrics::Histogram* fusion_s = nullptr;
+    metrics::Gauge* supervoxels = nullptr;
+    metrics::Gauge* own_supervoxels = nullptr;
+    metrics::Gauge* edges = nullptr;
+    metrics::Gauge* graph_vertices = nullptr;
+    metrics::Gauge* voxels = nullptr;
+    metrics::Gauge* window_bytes_team_map = nullptr;
+    metrics::Gauge* window_bytes_hlmap = nullptr;
+    metrics::Gauge* window_bytes_snapshots = nullptr;
+    metrics::Counter* gaps_detected = nullptr;
+    metrics::Counter* gaps_repaired = nullptr;
+    metrics::Counter* repair_requests = nullptr;
+    metrics::Counter* snapshots_served = nullptr;
+    metrics::Counter* bad_deltas = nullptr;
+  } metrics_;
+  highlevel::PeerSyncStats reported_;  // sync stats already added to the counters
+};
+
+}  // namespace hexplore::hlmap
