@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 #include <sstream>
+#include <thread>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -20,9 +21,10 @@ struct Node {
   Footprint footprint;
 };
 
+// The level is offset by a quarter so float noise around a floor stays in one level.
 uint64_t state_key(const Eigen::Vector2d& xy, double z, double grid) {
   return core::seed_key({static_cast<int32_t>(std::floor(xy.x() / grid)), static_cast<int32_t>(std::floor(xy.y() / grid)),
-                         static_cast<int32_t>(std::floor(z / kLevelM))});
+                         static_cast<int32_t>(std::floor(z / kLevelM + 0.25))});
 }
 
 // Moves the footprint from `from` to `to_xy` in substeps; the final footprint, or nullopt.
@@ -111,30 +113,58 @@ std::vector<uint8_t> observable_mask(const RayCaster& caster, const SurfaceSampl
   }
   std::vector<uint8_t> mask(samples.points.size(), 0);
   if (views.empty()) return mask;
-  std::vector<std::pair<float, uint32_t>> near;
-  near.reserve(views.size());
-  for (size_t i = 0; i < samples.points.size(); ++i) {
-    const Eigen::Vector3f& p = samples.points[i];
-    near.clear();
+
+  // Samples are grouped in 4 m cells; each cell gets the viewpoints nearest its centre once
+  // (a few times more than are tried, since a sample may sit anywhere in its cell), and a
+  // sample only re-ranks that short list.
+  constexpr double kCellM = 4.0;
+  const size_t want = static_cast<size_t>(std::max(1, options.max_candidates));
+  const size_t shortlist = 4 * want;
+  auto cell_key = [](const Eigen::Vector3f& p) { return core::seed_key(core::cell_of(p.cast<double>(), kCellM)); };
+  std::unordered_map<uint64_t, std::vector<uint32_t>> lists;
+  for (const auto& p : samples.points) lists.emplace(cell_key(p), std::vector<uint32_t>{});
+  const float half_diagonal = static_cast<float>(kCellM * std::sqrt(3.0) / 2);
+  for (auto& [key, list] : lists) {
+    const Eigen::Vector3f centre = core::cell_center(core::cell_of_key(key), kCellM).cast<float>();
+    std::vector<std::pair<float, uint32_t>> ranked;
     for (uint32_t v = 0; v < views.size(); ++v) {
-      const float d = (views[v].eye - p).norm();
-      if (d <= views[v].range) near.emplace_back(d, v);
+      const float d = (views[v].eye - centre).norm();
+      if (d <= views[v].range + half_diagonal) ranked.emplace_back(d, v);
     }
-    const size_t k = std::min<size_t>(near.size(), static_cast<size_t>(options.max_candidates));
-    std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(k), near.end());
-    for (size_t c = 0; c < k; ++c) {
-      const float d = near[c].first;
-      if (d < 1e-3f) {
-        mask[i] = 1;
-        break;
-      }
-      const Eigen::Vector3f dir = (views[near[c].second].eye - p) / d;
-      if (!caster.occluded(p, dir, 0.02f, d - 0.02f)) {
-        mask[i] = 1;
-        break;
-      }
-    }
+    const size_t k = std::min(ranked.size(), shortlist);
+    std::partial_sort(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(k), ranked.end());
+    for (size_t i = 0; i < k; ++i) list.push_back(ranked[i].second);
   }
+
+  auto work = [&](size_t begin, size_t end) {
+    std::vector<std::pair<float, uint32_t>> near;
+    for (size_t i = begin; i < end; ++i) {
+      const Eigen::Vector3f& p = samples.points[i];
+      near.clear();
+      for (uint32_t v : lists.at(cell_key(p))) {
+        const float d = (views[v].eye - p).norm();
+        if (d <= views[v].range) near.emplace_back(d, v);
+      }
+      const size_t k = std::min(near.size(), want);
+      std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(k), near.end());
+      for (size_t c = 0; c < k; ++c) {
+        const float d = near[c].first;
+        if (d < 1e-3f || !caster.occluded(p, (views[near[c].second].eye - p) / d, 0.02f, d - 0.02f)) {
+          mask[i] = 1;
+          break;
+        }
+      }
+    }
+  };
+  // Queries are thread-safe: split the samples over the cores.
+  const size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 16);
+  const size_t chunk = (samples.points.size() + threads - 1) / threads;
+  std::vector<std::thread> pool;
+  for (size_t t = 0; t < threads; ++t) {
+    const size_t begin = t * chunk, end = std::min(samples.points.size(), begin + chunk);
+    if (begin < end) pool.emplace_back(work, begin, end);
+  }
+  for (auto& th : pool) th.join();
   return mask;
 }
 

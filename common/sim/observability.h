@@ -26,7 +26,7 @@ struct ObservabilityOptions {
   double grid_m = 0.5;              // flood-fill cell size
   size_t max_cells = 300000;        // flood-fill budget per species
   double viewpoint_spacing_m = 2.0;  // reachable ground thinned to one viewpoint per cell of this size
-  int max_candidates = 16;          // nearest viewpoints tried per sample
+  int max_candidates = 12;          // nearest viewpoints tried per sample
 };
 
 // Ground points (x, y, support z) a robot of `species` reaches from `starts` inside `region`.

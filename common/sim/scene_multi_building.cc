@@ -17,7 +17,7 @@ SceneInfo make_multi_building(uint64_t seed) {
   b1.floors = 2;
   b1.floor_height_m = 3.0;
   b1.doors = {{Side::kEast, 5.0}, {Side::kNorth, 4.0}};
-  b1.slab_holes = {{Rect{2.25, 4.8, 3.9, 10.1}}};
+  b1.slab_holes = {{Rect{2.25, 4.8, 3.9, 9.76}}};
   add_building(b, b1);
   b.stairs({3.0, 5.0, 0.0}, Heading::kPlusY, 1.4, 17, 3.0 / 17, 0.28);
   add_wall(b, {4.0, 10.5}, {14.75, 10.5}, 0.2, 0.0, 2.8, {{3.0, 4.4, 0, 2.2}});
@@ -31,7 +31,7 @@ SceneInfo make_multi_building(uint64_t seed) {
   b2.floors = 2;
   b2.floor_height_m = 3.5;
   b2.doors = {{Side::kWest, 6.0}, {Side::kNorth, 5.0}};
-  b2.slab_holes = {{Rect{35.15, 3.8, 36.75, 9.9}}};
+  b2.slab_holes = {{Rect{35.15, 3.8, 36.75, 9.6}}};
   add_building(b, b2);
   b.stairs({35.95, 4.0, 0.0}, Heading::kPlusY, 1.4, 20, 0.175, 0.28);
   add_wall(b, {24.25, 11.0}, {34.8, 11.0}, 0.2, 0.0, 3.3, {{5.0, 6.4, 0, 2.2}});
@@ -46,7 +46,7 @@ SceneInfo make_multi_building(uint64_t seed) {
   b3.floors = 3;
   b3.floor_height_m = 4.0;
   b3.doors = {{Side::kSouth, 5.0}, {Side::kSouth, 14.0}, {Side::kEast, 8.0}};
-  b3.slab_holes = {{Rect{2.25, 23.8, 3.9, 30.7}}, {Rect{20.1, 23.8, 21.75, 30.7}}};
+  b3.slab_holes = {{Rect{2.25, 23.8, 3.9, 30.44}}, {Rect{20.1, 23.8, 21.75, 30.44}}};
   add_building(b, b3);
   b.stairs({3.0, 24.0, 0.0}, Heading::kPlusY, 1.4, 23, 4.0 / 23, 0.28);
   b.stairs({21.0, 24.0, 4.0}, Heading::kPlusY, 1.4, 23, 4.0 / 23, 0.28);

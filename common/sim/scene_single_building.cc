@@ -19,7 +19,7 @@ SceneInfo make_single_building(uint64_t seed) {
   main.floors = 4;
   main.floor_height_m = 3.5;
   main.doors = {{Side::kSouth, 3.0}, {Side::kSouth, 12.0}, {Side::kNorth, 8.0}, {Side::kWest, 9.0}};
-  main.slab_holes = {{Rect{18.15, 4.3, 19.75, 10.4}}};
+  main.slab_holes = {{Rect{18.15, 4.3, 19.75, 10.1}}};
   add_building(b, main);
   b.stairs({18.95, 4.5, 0.0}, Heading::kPlusY, 1.4, 20, 0.175, 0.28);
   // Ground-floor rooms: a wall along y = 10.5 and one along x = 11.5, each with doors.

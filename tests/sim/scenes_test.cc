@@ -1,9 +1,11 @@
 #include "common/sim/scenes.h"
 
+#include <array>
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
+#include "common/sim/observability.h"
 #include "common/sim/ray_caster.h"
 #include "common/sim/robot_motion.h"
 #include "common/sim/scene_error.h"
@@ -56,6 +58,30 @@ TEST(Scenes, SuggestedStartsAreFreeFlatGround) {
                                                      << to_string(robot.block_reason());
       }
   }
+}
+
+// single-building needs both species: only the tracked robot reaches the annex's indoor space
+// (across the debris yard) and the first floor (up the stairs) from the default starts.
+TEST(Scenes, SingleBuildingAnnexAndUpperFloorNeedTheTrackedRobot) {
+  const auto scene = generate_scene("single-building", 1);
+  const RayCaster caster(scene.mesh);
+  auto count = [&](const core::SpeciesConfig& species, const Eigen::Vector3d& start) {
+    const std::vector<Eigen::Vector3d> starts = {start};
+    size_t annex = 0, upstairs = 0, total = 0;
+    for (const auto& p : reachable_ground(caster, species, starts, scene.site)) {
+      ++total;
+      annex += p.x() > 23.8 && p.x() < 31.2 && p.y() > 2.3 && p.y() < 13.7;
+      upstairs += p.z() > 3.0;
+    }
+    return std::array<size_t, 3>{annex, upstairs, total};
+  };
+  const auto tracked = count(core::builtin_slugcat(), {2, -3, 0});
+  const auto wheeled = count(core::builtin_mr1000(), {4, -3, 0});
+  EXPECT_GT(tracked[0], 100u);
+  EXPECT_GT(tracked[1], 300u);
+  EXPECT_EQ(wheeled[0], 0u);
+  EXPECT_EQ(wheeled[1], 0u);
+  EXPECT_GT(wheeled[2], 2000u);  // but it does get around the outside and into the main building
 }
 
 // The OSRF collapsed town (third-party COLLADA-derived geometry): loads, and a robot of
