@@ -102,5 +102,19 @@ TEST(Scenes, OsrfCollapsedTownLoadsAndRobotsDrive) {
   }
 }
 
+// The original COLLADA file (inches, Z_UP; assimp applies the unit and turns it Y-up) loads
+// with up_axis = kY and the model's scale into the same geometry as the converted PLY part.
+TEST(Scenes, OsrfColladaOriginalLoadsWithImportOptions) {
+  const std::string dir = std::string(HEXPLORE_SHARED_DIR) + "/scenes/collapsed_town_osrf/";
+  if (!std::filesystem::exists(dir + "source/collapsed_house.dae")) GTEST_SKIP() << "shared scene not found";
+  MeshImportOptions options;
+  options.up_axis = UpAxis::kY;
+  options.scale = 1.5;
+  const auto dae = load_mesh(dir + "source/collapsed_house.dae", options).bounds();
+  const auto ply = load_mesh(dir + "parts/collapsed_house.ply").bounds();
+  EXPECT_LT((dae.min() - ply.min()).norm(), 0.02);
+  EXPECT_LT((dae.max() - ply.max()).norm(), 0.02);
+}
+
 }  // namespace
 }  // namespace hexplore::sim
