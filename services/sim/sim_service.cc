@@ -1,6 +1,7 @@
 #include "services/sim/sim_service.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -164,9 +165,11 @@ void SimService::setup(service::ServiceContext& context) {
 
   const auto wall = std::chrono::nanoseconds(std::max<int64_t>(clock_.wall_period_ns(step_ns_), 1'000'000));
   context.loop().add_timer(wall, [this] { tick(); });
-  core::LogLine(core::LogLevel::kInfo, "sim")
-      << robot_id_ << ": " << scene_.name << " (" << scene_.mesh.triangle_count() << " triangles), " << species->name
-      << " at " << motion_->ground_position().transpose() << ", rtf " << rtf;
+  const Eigen::Vector3d at = motion_->ground_position();
+  char where[96];
+  std::snprintf(where, sizeof(where), "(%.2f, %.2f, %.2f)", at.x(), at.y(), at.z());
+  core::LogLine(core::LogLevel::kInfo, "sim") << robot_id_ << ": " << scene_.name << " (" << scene_.mesh.triangle_count()
+                                              << " triangles), " << species->name << " at " << where << ", rtf " << rtf;
   context.set_state(v1::SERVICE_STATE_RUNNING, to_string(motion_->state()));
   publish_pose();
 }
@@ -241,8 +244,11 @@ void SimService::tick() {
   motion_->step(core::ns_to_s(step_ns_), mates);
   if (motion_->state() == MotionState::kBlocked && last_state_ != MotionState::kBlocked) {
     blocked_->increment();
+    const Eigen::Vector3d at = motion_->ground_position();
+    char where[96];
+    std::snprintf(where, sizeof(where), "(%.2f, %.2f, %.2f)", at.x(), at.y(), at.z());
     core::LogLine(core::LogLevel::kInfo, "sim") << robot_id_ << ": blocked (" << to_string(motion_->block_reason())
-                                               << ") at " << motion_->ground_position().transpose();
+                                               << ") at " << where;
   }
   last_state_ = motion_->state();
   if (motion_->collisions() > reported_collisions_) {
