@@ -109,7 +109,7 @@ void PerceptionMap::load(const std::string& path) {
   for (auto it = loaded.begin_leafs(), end = loaded.end_leafs(); it != end; ++it) {
     if (it.getDepth() != loaded.getTreeDepth()) fail("octree has a leaf above voxel depth");
     VoxelData& d = it->data();
-    d.flags &= static_cast<uint8_t>(~(kFlagChangePending | kFlagScratchGeometry | kFlagScratchRisk));
+    d.flags &= static_cast<uint8_t>(~(kFlagChangePending | kFlagScratchGeometry | kFlagScratchRisk | kFlagScratchTouched));
     ++leaves;
   }
   if (leaves != h.voxel_count) {

@@ -8,6 +8,19 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 
+// Spreads the 16 bits of v to every third bit of a 48-bit word.
+uint64_t spread3(uint64_t v) {
+  v &= 0xFFFF;
+  v = (v | (v << 16)) & 0x0000FF0000FFull;
+  v = (v | (v << 8)) & 0x00F00F00F00Full;
+  v = (v | (v << 4)) & 0x0C30C30C30C3ull;
+  v = (v | (v << 2)) & 0x249249249249ull;
+  return v;
+}
+
+// Morton (Z-order) code of a key: sorting by it keeps neighbours close in processing order.
+uint64_t morton(const octomap::OcTreeKey& k) { return spread3(k[0]) | (spread3(k[1]) << 1) | (spread3(k[2]) << 2); }
+
 }  // namespace
 
 PerceptionMap::PerceptionMap(MapParams params)
@@ -83,7 +96,7 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
       uint32_t& index = groups_.find_or_insert(packed, 0, inserted);
       if (inserted) {
         index = static_cast<uint32_t>(accumulators_.size());
-        accumulators_.push_back(Accumulator{key});
+        accumulators_.push_back(Accumulator{key, morton(key)});
       }
       last_packed = packed;
       last_index = index;
@@ -103,7 +116,11 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
     ++stats.points_integrated;
   }
 
-  // 2. Fold each voxel's scan moments into its Gaussian, creating new leaves.
+  // 2. Fold each voxel's scan moments into its Gaussian, creating new leaves. Voxels are taken
+  //    in Z-order: the metric updates below visit each voxel's neighbourhood, and LiDAR order
+  //    (ring by ring) would put neighbours thousands of voxels apart in memory and time.
+  std::sort(accumulators_.begin(), accumulators_.end(),
+            [](const Accumulator& a, const Accumulator& b) { return a.order < b.order; });
   touched_.clear();
   for (const Accumulator& acc : accumulators_) {
     bool created = false;
@@ -113,9 +130,10 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
       ++stats.voxels_created;
     }
     VoxelData& d = node->data();
-    // A voxel gaining under a quarter of its points shifts a neighbour's fused Gaussian (27
-    // voxels) by far less; skipping those neighbours keeps a revisited area cheap to update.
-    const bool propagates = created || acc.n * 4 >= d.count;
+    // A voxel that less than doubles shifts a neighbour's fused Gaussian (27 voxels, typically
+    // nine occupied) by a few percent; skipping those neighbours keeps rescans cheap. They are
+    // recomputed in full whenever a scan touches them.
+    const bool propagates = created || acc.n >= d.count;
     d.count += acc.n;
     for (int a = 0; a < 3; ++a) d.sum[a] += static_cast<float>(acc.s[a]);
     for (int a = 0; a < 6; ++a) d.sum_sq[a] += static_cast<float>(acc.q[a]);
@@ -125,33 +143,32 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
   if (touched_.empty()) return stats;
 
   // 3. Normals and sparsity of the touched voxels and of the 26-neighbours of those that
-  //    changed enough to matter to them.
+  //    changed enough to matter to them, then the observation metrics of the touched voxels
+  //    with their new normals. Every Gaussian is final after step 2, so each voxel's geometry
+  //    is computed as soon as it is reached: its neighbourhood is then still in cache.
   brick_index_.clear(touched_.size());
   bricks_.clear();
   NeighbourLookup lookup(tree_, bricks_, brick_index_);
   geometry_set_.clear();
+  for (const Touched& t : touched_) t.node->data().flags |= kFlagScratchTouched;
+  auto geometry = [&](const octomap::OcTreeKey& key, VoxelNode* node) {
+    VoxelData& d = node->data();
+    d.flags |= kFlagScratchGeometry;
+    update_geometry(key, d, lookup, centre_of(key), scan.sensor_origin, (d.flags & kFlagScratchTouched) != 0, params_);
+    geometry_set_.push_back({key, node});
+  };
   for (const Touched& t : touched_) {
-    t.node->data().flags |= kFlagScratchGeometry;
-    geometry_set_.push_back({t.key, t.node});
-  }
-  for (const Touched& t : touched_) {
+    if ((t.node->data().flags & kFlagScratchGeometry) == 0) geometry(t.key, t.node);
+    update_observation(t.node->data(), centre_of(t.key), scan.sensor_origin, t.points);
     if (!t.propagates) continue;
     VoxelNode* block[27];
     lookup.gather27(t.key, block);
     for (int i = 0; i < 27; ++i) {
       VoxelNode* n = block[i];
       if (n == nullptr || (n->data().flags & kFlagScratchGeometry) != 0) continue;
-      n->data().flags |= kFlagScratchGeometry;
-      geometry_set_.push_back({NeighbourLookup::offset(t.key, i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1), n});
+      geometry(NeighbourLookup::offset(t.key, i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1), n);
     }
   }
-  for (size_t i = 0; i < geometry_set_.size(); ++i) {
-    const Pending& g = geometry_set_[i];
-    update_geometry(g.key, g.node->data(), lookup, centre_of(g.key), scan.sensor_origin, i < touched_.size(), params_);
-  }
-
-  // 4. Observation metrics of the voxels this scan saw, with their updated normals.
-  for (const Touched& t : touched_) update_observation(t.node->data(), centre_of(t.key), scan.sensor_origin, t.points);
 
   // 5. Flags and risk masks of every voxel whose terrain sample may have changed: the geometry
   //    set (its 26-neighbourhoods), and around new voxels also the columns within the step
@@ -183,7 +200,7 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
   }
   for (const Pending& r : risk_set_) refresh_state(r.key, r.node->data(), lookup);
   for (const Pending& r : risk_set_) {
-    r.node->data().flags &= static_cast<uint8_t>(~(kFlagScratchGeometry | kFlagScratchRisk));
+    r.node->data().flags &= static_cast<uint8_t>(~(kFlagScratchGeometry | kFlagScratchRisk | kFlagScratchTouched));
   }
   stats.voxels_recomputed = risk_set_.size();
   return stats;

@@ -91,11 +91,12 @@ class PerceptionMap {
     octomap::OcTreeKey key;
     VoxelNode* node;
     uint32_t points;
-    bool propagates;  // new, or its Gaussian changed enough to move its neighbours' metrics
+    bool propagates;  // new, or at least doubled: its neighbours' metrics are recomputed
     bool created;
   };
   struct Accumulator {
     octomap::OcTreeKey key;
+    uint64_t order = 0;  // Morton code of key
     uint32_t n = 0;
     double s[3] = {0, 0, 0};
     double q[6] = {0, 0, 0, 0, 0, 0};

@@ -47,6 +47,11 @@ void update_geometry(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLooku
   const double res = params.resolution_m;
   VoxelNode* block[27];
   lookup.gather27(key, block);
+  // The neighbours live in scattered heap nodes; ask for all of them at once so their cache
+  // misses overlap instead of stalling the accumulation one by one.
+  for (const VoxelNode* b : block) {
+    if (b != nullptr) __builtin_prefetch(&b->data().count);
+  }
   double n = 0.0;
   double s1[3] = {0, 0, 0};
   double s2[6] = {0, 0, 0, 0, 0, 0};  // xx xy xz yy yz zz
@@ -57,7 +62,11 @@ void update_geometry(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLooku
       ++empty;
       continue;
     }
-    const double o[3] = {(i % 3 - 1) * res, (i / 3 % 3 - 1) * res, (i / 9 - 1) * res};
+    static constexpr int8_t kOffset[27][3] = {
+        {-1, -1, -1}, {0, -1, -1}, {1, -1, -1}, {-1, 0, -1}, {0, 0, -1}, {1, 0, -1}, {-1, 1, -1}, {0, 1, -1}, {1, 1, -1},
+        {-1, -1, 0},  {0, -1, 0},  {1, -1, 0},  {-1, 0, 0},  {0, 0, 0},  {1, 0, 0},  {-1, 1, 0},  {0, 1, 0},  {1, 1, 0},
+        {-1, -1, 1},  {0, -1, 1},  {1, -1, 1},  {-1, 0, 1},  {0, 0, 1},  {1, 0, 1},  {-1, 1, 1},  {0, 1, 1},  {1, 1, 1}};
+    const double o[3] = {kOffset[i][0] * res, kOffset[i][1] * res, kOffset[i][2] * res};
     const double c = nd->count;
     const double a[3] = {nd->sum[0], nd->sum[1], nd->sum[2]};
     n += c;

@@ -14,6 +14,7 @@ inline constexpr uint8_t kFlagCovered = 2;
 inline constexpr uint8_t kFlagTraversable = 4;
 inline constexpr uint8_t kPublishedFlagsMask = kFlagGround | kFlagCovered | kFlagTraversable;
 // Internal bits, never published.
+inline constexpr uint8_t kFlagScratchTouched = 0x08;  // scan-local: this scan hit it
 inline constexpr uint8_t kFlagChangePending = 0x10;  // in the change list
 inline constexpr uint8_t kFlagWasPublished = 0x20;   // pub_* hold the last published state
 inline constexpr uint8_t kFlagScratchGeometry = 0x40;  // scan-local set membership
