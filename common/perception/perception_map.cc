@@ -151,15 +151,21 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
   NeighbourLookup lookup(tree_, bricks_, brick_index_);
   geometry_set_.clear();
   for (const Touched& t : touched_) t.node->data().flags |= kFlagScratchTouched;
+  // Flags and risk masks (step 4) of a voxel depend on its own normal and on its neighbours'
+  // means and occupancy, all final by now: untouched voxels are refreshed right after their
+  // geometry, touched ones after their observation update.
   auto geometry = [&](const octomap::OcTreeKey& key, VoxelNode* node) {
     VoxelData& d = node->data();
-    d.flags |= kFlagScratchGeometry;
-    update_geometry(key, d, lookup, centre_of(key), scan.sensor_origin, (d.flags & kFlagScratchTouched) != 0, params_);
+    d.flags |= kFlagScratchGeometry | kFlagScratchRisk;
+    const bool touched = (d.flags & kFlagScratchTouched) != 0;
+    update_geometry(key, d, lookup, centre_of(key), scan.sensor_origin, touched, params_);
+    if (!touched) refresh_state(key, d, lookup);
     geometry_set_.push_back({key, node});
   };
   for (const Touched& t : touched_) {
     if ((t.node->data().flags & kFlagScratchGeometry) == 0) geometry(t.key, t.node);
     update_observation(t.node->data(), centre_of(t.key), scan.sensor_origin, t.points);
+    refresh_state(t.key, t.node->data(), lookup);
     if (!t.propagates) continue;
     VoxelNode* block[27];
     lookup.gather27(t.key, block);
@@ -170,16 +176,12 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
     }
   }
 
-  // 5. Flags and risk masks of every voxel whose terrain sample may have changed: the geometry
-  //    set (its 26-neighbourhoods), and around new voxels also the columns within the step
-  //    window (a new cell can change which run a neighbour column's surface is) and the cells
-  //    below within the clearance window. An existing voxel's mean moves by under a quarter
-  //    of a cell when it propagates, which only its 26-neighbours' steps notice.
+  // 4. Flags and risk masks of the voxels whose terrain sample may have changed beyond the
+  //    geometry set (refreshed above): around new voxels, the columns within the step window
+  //    (a new cell can change which run a neighbour column's surface is) and the cells below
+  //    within the clearance window. An existing voxel that propagates moves its mean by under
+  //    half a cell, which only its 26-neighbours' steps notice.
   risk_set_.clear();
-  for (const Pending& g : geometry_set_) {
-    g.node->data().flags |= kFlagScratchRisk;
-    risk_set_.push_back(g);
-  }
   auto add_risk = [&](const octomap::OcTreeKey& k) {
     VoxelNode* n = lookup.at(k);
     if (n == nullptr || (n->data().flags & kFlagScratchRisk) != 0) return;
@@ -199,10 +201,10 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
     for (int dz = -window_.clearance_cells; dz < -1; ++dz) add_risk(NeighbourLookup::offset(t.key, 0, 0, dz));
   }
   for (const Pending& r : risk_set_) refresh_state(r.key, r.node->data(), lookup);
-  for (const Pending& r : risk_set_) {
-    r.node->data().flags &= static_cast<uint8_t>(~(kFlagScratchGeometry | kFlagScratchRisk | kFlagScratchTouched));
-  }
-  stats.voxels_recomputed = risk_set_.size();
+  constexpr uint8_t kScratch = kFlagScratchGeometry | kFlagScratchRisk | kFlagScratchTouched;
+  for (const Pending& g : geometry_set_) g.node->data().flags &= static_cast<uint8_t>(~kScratch);
+  for (const Pending& r : risk_set_) r.node->data().flags &= static_cast<uint8_t>(~kScratch);
+  stats.voxels_recomputed = geometry_set_.size() + risk_set_.size();
   return stats;
 }
 
