@@ -42,7 +42,8 @@ class Ga {
   }
 
   GaResult run() {
-    const int64_t start = core::monotonic_ns();
+    const int64_t start = budget_clock_ns(o_.budget_clock);
+    const int64_t wall_start = core::monotonic_ns();
     // With a final local search the generations stop at 90 % of the budget to leave it room.
     const bool final_ls = o_.local_search != LocalSearchMode::kNone;
     const int64_t hard_deadline = o_.time_budget_s > 0 ? start + core::s_to_ns(o_.time_budget_s) : 0;
@@ -71,7 +72,7 @@ class Ga {
     while (true) {
       if (o_.max_generations > 0 && gen >= o_.max_generations) break;
       if (o_.max_generations <= 0 && deadline == 0) break;  // nothing bounds the run
-      if (deadline != 0 && core::monotonic_ns() > deadline) break;
+      if (deadline != 0 && budget_clock_ns(o_.budget_clock) > deadline) break;
       if (o_.stall_generations > 0 && stall >= o_.stall_generations) break;
       ++gen;
       for (int i = 0; i < size; ++i) order[size_t(i)] = i;
@@ -86,7 +87,7 @@ class Ga {
           Individual& child = next[size_t(g + k)];
           child.routes = parent.routes;
           mutate(child.routes, ops_[size_t(k % int(ops_.size()))], k >= int(ops_.size()));
-          if (o_.local_search == LocalSearchMode::kOffspring) local_search(m_, child.routes, deadline);
+          if (o_.local_search == LocalSearchMode::kOffspring) local_search(m_, child.routes, deadline, 1000, o_.budget_clock);
           child.fitness = evaluate(child.routes);
         }
       }
@@ -109,7 +110,7 @@ class Ga {
     result.breakdown = m_.evaluate(best.routes);
     result.generations = gen;
     result.evaluations = evaluations_;
-    result.elapsed_s = core::ns_to_s(core::monotonic_ns() - start);
+    result.elapsed_s = core::ns_to_s(core::monotonic_ns() - wall_start);
     result.feasible = result.breakdown.infeasible == 0;
     return result;
   }
@@ -123,7 +124,7 @@ class Ga {
   }
 
   void improve(Individual& ind, int64_t deadline) {
-    local_search(m_, ind.routes, deadline);
+    local_search(m_, ind.routes, deadline, 1000, o_.budget_clock);
     ind.fitness = evaluate(ind.routes);
   }
 

@@ -26,6 +26,7 @@ struct GaOptions {
   int population = 64;            // rounded up to a multiple of the group size (8)
   int max_generations = 400;      // deterministic budget; 0 = unbounded (then time must bound it)
   double time_budget_s = 0.0;     // 0 = no time limit; a time limit makes the result timing-dependent
+  BudgetClock budget_clock = BudgetClock::kWall;
   int stall_generations = 0;      // stop after this many generations without improvement; 0 = never
   uint64_t seed = 1;
   bool use_inversion = false;     // add inversion to the paper's swap / shift / shuffle

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 
 #include "common/core/clock.h"
 
@@ -12,15 +13,15 @@ namespace {
 // it touches plus the maximum over the others.
 class Improver {
  public:
-  Improver(const FitnessModel& model, std::vector<Route>& routes, int64_t deadline_ns)
-      : m_(model), p_(model.problem()), routes_(routes), deadline_ns_(deadline_ns) {
+  Improver(const FitnessModel& model, std::vector<Route>& routes, int64_t deadline_ns, BudgetClock clock)
+      : m_(model), p_(model.problem()), routes_(routes), deadline_ns_(deadline_ns), clock_(clock) {
     costs_.resize(routes.size());
     refs_.resize(routes.size());
     for (size_t r = 0; r < routes.size(); ++r) refresh(int(r));
   }
 
   double fitness() const { return fitness_with(-1, 0, 0, -1, 0, 0); }
-  bool expired() const { return deadline_ns_ != 0 && core::monotonic_ns() > deadline_ns_; }
+  bool expired() const { return deadline_ns_ != 0 && budget_clock_ns(clock_) > deadline_ns_; }
 
   bool two_opt(int r) {
     Route& rt = routes_[size_t(r)];
@@ -170,16 +171,24 @@ class Improver {
   const MtspProblem& p_;
   std::vector<Route>& routes_;
   int64_t deadline_ns_;
+  BudgetClock clock_;
   std::vector<double> costs_, refs_;
   double current_ = 0.0;
 };
 
 }  // namespace
 
+int64_t budget_clock_ns(BudgetClock clock) {
+  if (clock == BudgetClock::kWall) return core::monotonic_ns();
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return int64_t(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+}
+
 LocalSearchStats local_search(const FitnessModel& model, std::vector<Route>& routes, int64_t deadline_ns,
-                              int max_passes) {
+                              int max_passes, BudgetClock clock) {
   LocalSearchStats stats;
-  Improver improver(model, routes, deadline_ns);
+  Improver improver(model, routes, deadline_ns, clock);
   stats.fitness_before = improver.fitness();
   bool improved = true;
   while (improved && stats.passes < max_passes && !improver.expired()) {

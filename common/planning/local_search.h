@@ -18,9 +18,14 @@ struct LocalSearchStats {
   double fitness_after = 0.0;
 };
 
-// Improves `routes` in place; never makes the fitness worse. deadline_ns: monotonic-clock
-// nanoseconds (core::monotonic_ns) after which it stops between moves; 0 = no deadline.
+// Which clock a time budget counts: wall time (monotonic), or the CPU time of the calling
+// thread (benchmarks on a shared, loaded machine).
+enum class BudgetClock { kWall, kThreadCpu };
+int64_t budget_clock_ns(BudgetClock clock);
+
+// Improves `routes` in place; never makes the fitness worse. deadline_ns: nanoseconds of
+// `clock` after which it stops between moves; 0 = no deadline.
 LocalSearchStats local_search(const FitnessModel& model, std::vector<Route>& routes, int64_t deadline_ns = 0,
-                              int max_passes = 1000);
+                              int max_passes = 1000, BudgetClock clock = BudgetClock::kWall);
 
 }  // namespace hexplore::planning

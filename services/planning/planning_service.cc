@@ -1,0 +1,292 @@
+#include "services/planning/planning_service.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "common/core/clock.h"
+#include "common/core/config_error.h"
+#include "common/core/log.h"
+#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/supervoxel.h"
+#include "common/planning/hexplore_planner.h"
+#include "common/planning/plan_proto.h"
+#include "common/transport/topics.h"
+
+namespace hexplore::planning_service {
+
+namespace topics = transport::topics;
+
+namespace {
+Eigen::Vector3d position_of(const v1::RobotPose& p) {
+  return {p.pose().position_m().x(), p.pose().position_m().y(), p.pose().position_m().z()};
+}
+double parse_positive(const std::map<std::string, std::string>& args, const std::string& key, double fallback) {
+  const auto it = args.find(key);
+  if (it == args.end()) return fallback;
+  try {
+    size_t used = 0;
+    const double v = std::stod(it->second, &used);
+    if (used == it->second.size() && v > 0) return v;
+  } catch (const std::exception&) {
+  }
+  throw std::invalid_argument("planning: --" + key + " expects a positive number, got '" + it->second + "'");
+}
+}  // namespace
+
+void PlanningService::setup(service::ServiceContext& context) {
+  context_ = &context;
+  robot_id_ = context.robot_id();
+  const core::TeamConfig& team = context.team();
+  const auto index = team.robot_index(robot_id_);
+  const core::SpeciesConfig* species = context.species();
+  if (!index || species == nullptr)
+    throw core::ConfigError(team.source_file, "robots." + robot_id_, "planning: robot or its species is unknown");
+  self_ = *index;
+  speed_mps_ = species->speed_mps;
+  capabilities_ = planning::capabilities_from(team);
+  options_ = planning::PlannerOptions::from(team.params);
+  eta_t_s_ = team.params.eta_t_s;
+  map_ = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team));
+  for (const auto& r : team.robots) positions_[r.id] = r.start_position_m;
+
+  const auto& args = context.arguments();
+  if (auto it = args.find("wait-for-start"); it != args.end()) {
+    if (it->second == "true") mission_active_ = false;
+    else if (it->second != "false")
+      throw std::invalid_argument("planning: --wait-for-start expects true or false, got '" + it->second + "'");
+  }
+  const double cycle_ms = parse_positive(args, "cycle-ms", 200.0);
+  reach_m_ = parse_positive(args, "reach-m", 1.0);
+  min_replan_s_ = parse_positive(args, "min-replan-s", 1.0);
+
+  auto& m = context.metrics();
+  labels_ = {{"robot", robot_id_}};
+  const auto buckets = metrics::latency_buckets_s();
+  auto* stage = m.histogram_family("hexplore_planning_stage_seconds", "Single-round planning time per stage", buckets);
+  auto with = [&](const char* k, const char* v) {
+    metrics::Labels l = labels_;
+    l[k] = v;
+    return l;
+  };
+  stage_views_ = stage->add(with("stage", "views"));
+  stage_clustering_ = stage->add(with("stage", "clustering"));
+  stage_assignment_ = stage->add(with("stage", "assignment"));
+  stage_mnss_ = stage->add(with("stage", "mnss"));
+  stage_total_ = stage->add(with("stage", "total"));
+  views_ = m.gauge_family("hexplore_planning_views", "Task views in the last round")->add(labels_);
+  clusters_ = m.gauge_family("hexplore_planning_clusters", "Task clusters in the last round")->add(labels_);
+  generations_ = m.gauge_family("hexplore_planning_ga_generations", "GA generations in the last round")->add(labels_);
+  fitness_ = m.gauge_family("hexplore_planning_ga_best_fitness", "Best GA fitness in the last round")->add(labels_);
+  agreement_ = m.gauge_family("hexplore_planning_assignment_agreement_ratio",
+                              "Share of clusters assigned to the same robot as in the reference solution")
+                   ->add(labels_);
+  rounds_ = m.counter_family("hexplore_planning_rounds_total", "Planning rounds run")->add(labels_);
+  switches_ = m.counter_family("hexplore_planning_planner_switches_total", "Run-time planner switches, by new planner");
+  active_gauge_ = m.gauge_family("hexplore_planning_planner_active", "1 for the active planner, 0 for the others");
+
+  if (!registry_.contains(team.params.planner)) registry_.create(team.params.planner);  // throws, listing the known ones
+  if (!switch_planner(team.params.planner)) throw std::invalid_argument("planning: cannot activate planner");
+
+  context.connect(robot_id_, core::ServiceKind::kHlmap);
+  context.connect(robot_id_, core::ServiceKind::kSim);
+  for (const auto& r : team.robots) {
+    context.connect(r.id, core::ServiceKind::kSim);
+    if (r.id != robot_id_) context.connect(r.id, core::ServiceKind::kPlanning);
+  }
+  if (team.find_robot(std::string(core::kStationId)) == nullptr)
+    context.connect(std::string(core::kStationId), core::ServiceKind::kStation);
+
+  auto& sub = context.subscriber();
+  sub.on<v1::FusedMapUpdate>(topics::hlmap(robot_id_),
+                             [this](const transport::Received<v1::FusedMapUpdate>& r) { on_map(r.message); });
+  sub.on<v1::RobotPose>(topics::pose(robot_id_), [this](const transport::Received<v1::RobotPose>& r) {
+    positions_[robot_id_] = position_of(r.message);
+  });
+  sub.on<v1::RobotPose>(std::string(topics::kTeamPose), [this](const transport::Received<v1::RobotPose>& r) {
+    if (context_->team().find_robot(r.header.robot_id())) positions_[r.header.robot_id()] = position_of(r.message);
+  });
+  sub.on<v1::TeamSolution>(std::string(topics::kTeamPlan), [this](const transport::Received<v1::TeamSolution>& r) {
+    const std::string& source = r.header.robot_id();
+    if (source == robot_id_ || !context_->team().find_robot(source)) return;
+    shared_[source] = planning::reference_from_proto(r.message, source);
+    peer_replanned_ = true;
+  });
+  sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
+                             [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
+  request_snapshot();
+  context.loop().add_timer(std::chrono::microseconds(int64_t(cycle_ms * 1000)), [this] { cycle(); });
+  context.set_state(v1::SERVICE_STATE_RUNNING, "planner " + active_name_);
+}
+
+bool PlanningService::switch_planner(const std::string& name) {
+  if (name == active_name_ && active_) return true;
+  if (!registry_.contains(name)) {
+    core::log_once(core::LogLevel::kWarn, "planning", "unknown-planner/" + name,
+                   robot_id_ + ": ignoring switch to unknown planner '" + name + "'");
+    return false;
+  }
+  auto& slot = planners_[name];
+  if (!slot) {
+    slot = registry_.create(name);
+    slot->configure({capabilities_, options_});
+  }
+  if (active_) {
+    active_->deactivate();
+    if (active_gauge_) active_gauge_->add({{"robot", robot_id_}, {"planner", active_name_}})->set(0.0);
+  }
+  const std::string previous = active_name_;
+  active_ = slot.get();
+  active_name_ = name;
+  active_->activate();
+  if (active_gauge_) active_gauge_->add({{"robot", robot_id_}, {"planner", name}})->set(1.0);
+  if (!previous.empty()) {
+    if (switches_) switches_->add({{"robot", robot_id_}, {"planner", name}})->increment();
+    core::LogLine(core::LogLevel::kInfo, "planning") << robot_id_ << ": planner switched from " << previous << " to " << name;
+    route_.clear();  // plan again with the new planner at the next cycle
+  }
+  return true;
+}
+
+void PlanningService::request_snapshot() {
+  if (snapshot_pending_) return;
+  snapshot_pending_ = true;
+  v1::FusedMapRequest req;
+  req.set_requester(robot_id_);
+  context_->requester(robot_id_, core::ServiceKind::kHlmap)
+      .request<v1::FusedMapRequest, v1::FusedMapUpdate>(
+          req,
+          [this](const transport::Received<v1::FusedMapUpdate>* reply) {
+            snapshot_pending_ = false;
+            if (reply) on_map(reply->message);
+          },
+          std::chrono::milliseconds(2000));
+}
+
+void PlanningService::on_map(const v1::FusedMapUpdate& update) {
+  if (!update.full_snapshot()) {
+    // An increment only applies on top of the version right before it; otherwise resync.
+    if (!have_map_ || update.version() != map_version_ + 1) {
+      if (!have_map_ || update.version() > map_version_) request_snapshot();
+      return;
+    }
+  } else if (have_map_ && update.version() < map_version_) {
+    return;  // an older snapshot than what we have
+  }
+  map_->apply(highlevel::from_proto(update));
+  map_version_ = update.version();
+  have_map_ = true;
+}
+
+void PlanningService::on_mission(const v1::MissionCommand& command) {
+  if (!command.target_robot().empty() && command.target_robot() != robot_id_) return;
+  switch (command.command_case()) {
+    case v1::MissionCommand::kStart:
+      mission_active_ = true;
+      break;
+    case v1::MissionCommand::kStop:
+    case v1::MissionCommand::kEmergencyStop:
+      mission_active_ = false;
+      break;
+    case v1::MissionCommand::kSwitchPlanner:
+      switch_planner(command.switch_planner().planner());
+      break;
+    default:
+      break;
+  }
+}
+
+std::vector<planning::RobotState> PlanningService::team_states() const {
+  std::vector<planning::RobotState> out;
+  const auto& team = context_->team();
+  for (const auto& r : team.robots) out.push_back({r.id, team.species_index(r.species).value_or(0), positions_.at(r.id)});
+  return out;
+}
+
+void PlanningService::advance_route() {
+  if (next_view_ >= route_.size()) return;
+  const Eigen::Vector3d me = positions_.at(robot_id_);
+  bool moved = false;
+  while (next_view_ < route_.size() && (route_[next_view_].position - me).head<2>().norm() <= reach_m_) {
+    ++next_view_;
+    moved = true;
+  }
+  if (moved && next_view_ < route_.size()) publish_path();
+}
+
+void PlanningService::publish_path() {
+  const auto& team = context_->team();
+  const int species = team.species_index(team.robots[size_t(self_)].species).value_or(0);
+  const planning::ExecutablePlan path =
+      planning::executable_path(map_->graph(), positions_.at(robot_id_), species, route_[next_view_]);
+  if (path.valid) context_->publisher().publish(topics::path(robot_id_), planning::path_to_proto(round_, path, speed_mps_));
+}
+
+void PlanningService::cycle() {
+  if (!mission_active_ || !have_map_ || !active_) return;
+  advance_route();
+  const int64_t now = core::monotonic_ns();
+  const double age_s = core::ns_to_s(now - last_plan_ns_);
+  std::string reason;
+  if (route_.empty() && last_plan_ns_ == 0) reason = "first round";
+  else if (route_.empty() && age_s >= min_replan_s_) reason = "no route";
+  else if (next_view_ >= route_.size() && age_s >= min_replan_s_) reason = "route finished";
+  else if (age_s >= eta_t_s_) reason = "route timed out";
+  else if (peer_replanned_ && age_s >= min_replan_s_) reason = "teammate replanned";
+  if (!reason.empty()) replan(reason);
+}
+
+void PlanningService::replan(const std::string& reason) {
+  planning::PlanRequest req;
+  req.map = map_.get();
+  req.robots = team_states();
+  req.self = self_;
+  req.round = ++round_;
+  for (const auto& [source, s] : shared_) req.shared.push_back(s);
+  peer_replanned_ = false;
+  last_plan_ns_ = core::monotonic_ns();
+  planning::PlanResult res;
+  try {
+    res = active_->plan(req);
+  } catch (const std::exception& e) {
+    core::LogLine(core::LogLevel::kError, "planning") << robot_id_ << ": round " << round_ << " failed: " << e.what();
+    return;
+  }
+  // Our own solution is a reference candidate next round, like the teammates'.
+  shared_[robot_id_] = res.as_reference(robot_id_);
+  route_ = res.robots[size_t(self_)].route;
+  next_view_ = 0;
+
+  stage_views_->observe(res.times.views_s);
+  stage_clustering_->observe(res.times.clustering_s);
+  stage_assignment_->observe(res.times.assignment_s);
+  stage_mnss_->observe(res.times.mnss_s);
+  stage_total_->observe(res.times.total_s);
+  views_->set(res.views);
+  clusters_->set(res.clusters);
+  generations_->set(res.ga_generations);
+  fitness_->set(res.fitness);
+  if (res.agreement) agreement_->set(*res.agreement);
+  rounds_->increment();
+  core::LogLine(core::LogLevel::kDebug, "planning")
+      << robot_id_ << ": round " << round_ << " (" << reason << ", " << active_name_ << "): " << res.views << " views, "
+      << res.clusters << " clusters, " << route_.size() << " route views, " << res.times.total_s * 1e3 << " ms";
+
+  auto& pub = context_->publisher();
+  pub.publish(std::string(topics::kTeamPlan), planning::to_proto(res));
+  pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route_));
+  if (res.path.valid) pub.publish(topics::path(robot_id_), planning::path_to_proto(round_, res.path, speed_mps_));
+}
+
+void PlanningService::fill_status(v1::ServiceStatus& status) {
+  status.set_detail("planner " + active_name_);
+  auto add = [&](const char* name, double v) {
+    auto* value = status.add_values();
+    value->set_name(name);
+    value->set_value(v);
+  };
+  add("round", double(round_));
+  add("route_views_left", double(route_.size() - std::min(route_.size(), next_view_)));
+  add("map_version", double(map_version_));
+}
+
+}  // namespace hexplore::planning_service

@@ -1,0 +1,94 @@
+#pragma once
+// The planning process of one robot: keeps the fused high-level map from its hlmap, its own
+// and its teammates' poses, and the teammates' previous solutions; plans a round with the
+// active planner when the route times out (eta_t), when its robot finished the route, or when
+// a teammate shared a new solution; publishes the team solution (team/plan), its exploration
+// route and the executable path to the next view (to its safety). The active planner comes
+// from the config and can be switched at run time by a MissionCommand.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "common/highlevel/high_level_map.h"
+#include "common/planning/planner_registry.h"
+#include "common/service/service.h"
+#include "hexplore/v1/hlmap.pb.h"
+#include "hexplore/v1/mission.pb.h"
+#include "hexplore/v1/plan.pb.h"
+#include "hexplore/v1/pose.pb.h"
+
+namespace hexplore::planning_service {
+
+class PlanningService : public service::Service {
+ public:
+  core::ServiceKind kind() const override { return core::ServiceKind::kPlanning; }
+  // Options (after --config/--robot): --wait-for-start true|false (default false),
+  // --cycle-ms N (trigger check period, default 200), --reach-m X (a view counts as reached
+  // within this distance, default 1.0), --min-replan-s X (default 1.0).
+  void setup(service::ServiceContext& context) override;
+  void fill_status(v1::ServiceStatus& status) override;
+
+  // Switches the active planner; false (and logged) for an unknown name. Public for tests.
+  bool switch_planner(const std::string& name);
+  const std::string& active_planner() const { return active_name_; }
+
+ private:
+  void on_map(const v1::FusedMapUpdate& update);
+  void request_snapshot();
+  void on_mission(const v1::MissionCommand& command);
+  void cycle();
+  void replan(const std::string& reason);
+  void advance_route();
+  void publish_path();
+  std::vector<planning::RobotState> team_states() const;
+
+  service::ServiceContext* context_ = nullptr;
+  std::string robot_id_;
+  int self_ = 0;
+  planning::TeamCapabilities capabilities_;
+  planning::PlannerOptions options_;
+  planning::PlannerRegistry registry_ = planning::PlannerRegistry::builtin();
+  std::map<std::string, std::unique_ptr<planning::Planner>> planners_;
+  planning::Planner* active_ = nullptr;
+  std::string active_name_;
+
+  std::unique_ptr<highlevel::HighLevelMap> map_;
+  uint64_t map_version_ = 0;
+  bool have_map_ = false;
+  bool snapshot_pending_ = false;
+  std::map<std::string, Eigen::Vector3d> positions_;  // robot id -> last known position
+  std::map<std::string, planning::ReferenceSolution> shared_;  // source robot -> solution
+  bool peer_replanned_ = false;
+
+  bool mission_active_ = true;
+  uint64_t round_ = 0;
+  int64_t last_plan_ns_ = 0;
+  std::vector<planning::TaskView> route_;
+  size_t next_view_ = 0;
+  double eta_t_s_ = 10.0;
+  double reach_m_ = 1.0;
+  double min_replan_s_ = 1.0;
+  double speed_mps_ = 0.5;
+
+  metrics::Histogram* stage_views_ = nullptr;
+  metrics::Histogram* stage_clustering_ = nullptr;
+  metrics::Histogram* stage_assignment_ = nullptr;
+  metrics::Histogram* stage_mnss_ = nullptr;
+  metrics::Histogram* stage_total_ = nullptr;
+  metrics::Gauge* views_ = nullptr;
+  metrics::Gauge* clusters_ = nullptr;
+  metrics::Gauge* generations_ = nullptr;
+  metrics::Gauge* fitness_ = nullptr;
+  metrics::Gauge* agreement_ = nullptr;
+  metrics::Counter* rounds_ = nullptr;
+  metrics::CounterFamily* switches_ = nullptr;
+  metrics::GaugeFamily* active_gauge_ = nullptr;
+  metrics::Labels labels_;
+};
+
+}  // namespace hexplore::planning_service

@@ -1,0 +1,153 @@
+// The planning service over real (inproc) sockets: the test plays its hlmap (serving the fused
+// map), the robot driver, a teammate's planning and the station, and watches team/plan, the
+// route and the executable path.
+#include "services/planning/planning_service.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <functional>
+#include <optional>
+
+#include "common/core/endpoints.h"
+#include "common/core/team_config.h"
+#include "common/highlevel/proto_convert.h"
+#include "common/planning/synthetic_scene.h"
+#include "common/service/service.h"
+#include "common/transport/publisher.h"
+#include "common/transport/request_reply.h"
+#include "common/transport/subscriber.h"
+#include "common/transport/topics.h"
+
+namespace hexplore::planning_service {
+namespace {
+
+namespace topics = transport::topics;
+using core::ServiceKind;
+using core::SocketRole;
+
+constexpr const char* kTeam = R"(
+species:
+  - builtin: SLUGCAT
+  - builtin: MR1000
+robots:
+  - id: r1
+    species: SLUGCAT
+    start: [1.5, 1.5, 0]
+  - id: r2
+    species: MR1000
+    start: [20.5, 1.5, 0]
+params:
+  ga_max_generations: 100
+  ga_time_budget_s: 0
+)";
+
+class PlanningServiceTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    service::HostOptions options;
+    options.compose = true;
+    options.metrics_port = 0;
+    options.arguments = {{"cycle-ms", "50"}, {"min-replan-s", "0.2"}};
+    host_ = std::make_unique<service::ServiceHost>(core::parse_team_config(kTeam, "test team"), options);
+    const auto& team = host_->team();
+    // The fused map that hlmap would serve.
+    planning::SyntheticSceneOptions scene;
+    scene.width_cells = 30;
+    scene.depth_cells = 20;
+    scene.buildings = {{5, 5, 14, 13, 5}};
+    scene.rubble = {};
+    map_ = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team));
+    map_->apply(planning::synthetic_scene(scene));
+    hlmap_ = std::make_unique<transport::Responder>(
+        host_->transport(), transport::Identity{"r1", "", "hlmap"},
+        core::bind_endpoint(team, "r1", ServiceKind::kHlmap, SocketRole::kRequest));
+    hlmap_->serve<v1::FusedMapRequest, v1::FusedMapUpdate>([this](const transport::Received<v1::FusedMapRequest>&) {
+      ++snapshot_requests_;
+      return highlevel::to_fused_update(map_->snapshot(), *map_);
+    });
+    auto bind = [&](const std::string& robot, ServiceKind kind) {
+      return std::make_unique<transport::Publisher>(
+          host_->transport(), transport::Identity{robot, "", std::string(core::service_name(kind))},
+          core::bind_endpoint(team, robot, kind, SocketRole::kPublish));
+    };
+    station_ = bind(std::string(core::kStationId), ServiceKind::kStation);
+    watch_ = std::make_unique<transport::Subscriber>(host_->transport());
+    watch_->on<v1::TeamSolution>(std::string(topics::kTeamPlan),
+                                 [this](const transport::Received<v1::TeamSolution>& r) { plan_ = r.message; });
+    watch_->on<v1::ExplorationRoute>(topics::route("r1"),
+                                     [this](const transport::Received<v1::ExplorationRoute>& r) { route_ = r.message; });
+    watch_->on<v1::ExecutablePath>(topics::path("r1"),
+                                   [this](const transport::Received<v1::ExecutablePath>& r) { path_ = r.message; });
+    auto service = std::make_unique<PlanningService>();
+    service_ = service.get();
+    host_->add(std::move(service), "r1");
+    host_->start();
+    watch_->connect(core::connect_endpoint(team, "r1", ServiceKind::kPlanning, SocketRole::kPublish));
+  }
+
+  void TearDown() override {
+    watch_.reset();
+    station_.reset();
+    hlmap_.reset();  // every socket of the shared context closes before the host terminates it
+    host_.reset();
+  }
+
+  // Serves hlmap requests and collects outputs until `done` or `limit`.
+  bool until(const std::function<void()>& feed, const std::function<bool()>& done,
+             std::chrono::milliseconds limit = std::chrono::milliseconds(8000)) {
+    const auto deadline = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < deadline) {
+      feed();
+      const auto step_end = std::chrono::steady_clock::now() + std::chrono::milliseconds(50);
+      while (std::chrono::steady_clock::now() < step_end) {
+        hlmap_->drain(16);
+        watch_->receive_one(std::chrono::milliseconds(5));
+      }
+      if (done()) return true;
+    }
+    return false;
+  }
+
+  std::unique_ptr<service::ServiceHost> host_;
+  std::unique_ptr<highlevel::HighLevelMap> map_;
+  std::unique_ptr<transport::Responder> hlmap_;
+  std::unique_ptr<transport::Publisher> station_;
+  std::unique_ptr<transport::Subscriber> watch_;
+  PlanningService* service_ = nullptr;
+  int snapshot_requests_ = 0;
+  std::optional<v1::TeamSolution> plan_;
+  std::optional<v1::ExplorationRoute> route_;
+  std::optional<v1::ExecutablePath> path_;
+};
+
+TEST_F(PlanningServiceTest, FetchesTheMapPlansAndPublishesSolutionRouteAndPath) {
+  ASSERT_TRUE(until([] {}, [&] { return plan_ && route_ && path_; })) << "requests " << snapshot_requests_;
+  EXPECT_GE(snapshot_requests_, 1);
+  EXPECT_EQ(plan_->planner(), "hexplore");
+  ASSERT_EQ(plan_->sequences_size(), 2);
+  EXPECT_EQ(plan_->sequences(0).robot_id(), "r1");
+  EXPECT_GT(plan_->sequences(0).cluster_ids_size() + plan_->sequences(1).cluster_ids_size(), 0);
+  EXPECT_GT(route_->views_size(), 0);
+  ASSERT_GT(path_->waypoints_m_size(), 0);
+  EXPECT_NEAR(path_->waypoints_m(0).x(), 1.5, 1.0);
+  EXPECT_EQ(path_->goal().ground_supervoxel(), route_->views(0).ground_supervoxel());
+}
+
+TEST_F(PlanningServiceTest, SwitchesPlannerAtRunTime) {
+  ASSERT_TRUE(until([] {}, [&] { return plan_.has_value(); }));
+  v1::MissionCommand unknown;
+  unknown.mutable_switch_planner()->set_planner("teleport");
+  v1::MissionCommand cmd;
+  cmd.mutable_switch_planner()->set_planner("no-mnss");
+  ASSERT_TRUE(until(
+      [&] {
+        station_->publish(topics::kTeamMission, unknown);
+        station_->publish(topics::kTeamMission, cmd);
+      },
+      [&] { return plan_ && plan_->planner() == "no-mnss"; }));
+  EXPECT_EQ(service_->active_planner(), "no-mnss");
+}
+
+}  // namespace
+}  // namespace hexplore::planning_service
