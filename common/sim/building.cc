@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "common/sim/scene_error.h"
 
 namespace hexplore::sim {
 
@@ -85,6 +88,11 @@ std::vector<Opening> windows_for(const BuildingSpec& s, double length, const std
 }  // namespace
 
 void add_building(MeshBuilder& b, const BuildingSpec& s) {
+  for (const auto& d : s.doors)
+    if (d.width_m < kMinDoorWidthM || d.height_m < kMinDoorHeightM)
+      throw SceneError("building", "door of " + std::to_string(d.width_m) + " x " + std::to_string(d.height_m) +
+                                       " m is smaller than the robots need (" + std::to_string(kMinDoorWidthM) + " x " +
+                                       std::to_string(kMinDoorHeightM) + " m)");
   const Rect& f = s.footprint;
   const double t = s.wall_m;
   struct WallLine {

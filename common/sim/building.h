@@ -54,6 +54,7 @@ struct BuildingSpec {
   bool roof = true;
 };
 
+// Throws SceneError for a door smaller than kMinDoorWidthM x kMinDoorHeightM.
 void add_building(MeshBuilder& b, const BuildingSpec& spec);
 
 // Doors wide and tall enough for every robot species (the tests check this).

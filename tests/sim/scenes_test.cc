@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/sim/building.h"
 #include "common/sim/observability.h"
 #include "common/sim/ray_caster.h"
 #include "common/sim/robot_motion.h"
@@ -20,6 +21,21 @@ TEST(Scenes, GenerationIsDeterministicPerSeed) {
     EXPECT_NE(a.mesh.content_hash(), c.mesh.content_hash()) << name;
     EXPECT_GT(a.mesh.triangle_count(), 1000u) << name;
     EXPECT_LT(a.mesh.triangle_count(), 50000u) << name;  // moderate, so scans stay fast
+  }
+}
+
+TEST(Scenes, DoorsTooSmallForTheRobotsAreRejected) {
+  MeshBuilder b;
+  BuildingSpec spec;
+  spec.footprint = {0, 0, 10, 10};
+  spec.doors = {{Side::kSouth, 2.0, 1.0, 2.2}};
+  EXPECT_THROW(add_building(b, spec), SceneError);
+  spec.doors = {{Side::kSouth, 2.0, kMinDoorWidthM, kMinDoorHeightM}};
+  EXPECT_NO_THROW(add_building(b, spec));
+  // Robots fit: both species are narrower and lower than the smallest door.
+  for (const auto& species : {core::builtin_slugcat(), core::builtin_mr1000()}) {
+    EXPECT_LT(2 * species.body_half_extents_m.y() + 0.3, kMinDoorWidthM) << species.name;
+    EXPECT_LT(species.min_clearance_m, kMinDoorHeightM) << species.name;
   }
 }
 
