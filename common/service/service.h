@@ -148,6 +148,8 @@ class ServiceHost {
   void wait();
   // True once every service loop has returned.
   bool finished() const;
+  // True when a service stopped because a callback threw (logged); run_service_main exits 1.
+  bool failed() const;
 
   const core::TeamConfig& team() const { return team_; }
   transport::Context& transport() { return transport_; }
@@ -172,7 +174,8 @@ class ServiceHost {
 //   <exe> --config FILE --robot ID [--log-level debug|info|warn|error] [--metrics-port N]
 //         [--status-period-ms N] [--fault-drop FRACTION] [--fault-delay-ms N]
 //         [--fault-topics PREFIX,PREFIX] [--fault-seed N] [--<name> <value> ...service-specific]
-// Bad config: prints "error: <what>" on one line, returns 2. SIGINT/SIGTERM: clean stop, returns 0.
+// Bad config: prints "error: <what>" on one line, returns 2. SIGINT/SIGTERM, or every service
+// stopping its own loop: clean stop, returns 0. A service stopped by an exception: returns 1.
 int run_service_main(int argc, char** argv, const ServiceFactory& factory);
 
 // main() of a composed process: every factory for every --robot given (repeatable), inproc transport.

@@ -15,6 +15,7 @@ struct ServiceHost::Entry {
   std::unique_ptr<metrics::ProcessMetrics> process;
   std::thread thread;
   std::atomic<bool> finished{false};
+  std::atomic<bool> failed{false};
 };
 
 namespace {
@@ -108,6 +109,7 @@ void ServiceHost::start() {
         if (!setup_done) {
           promise->set_exception(std::current_exception());
         } else {
+          entry.failed.store(true);
           try {
             throw;
           } catch (const std::exception& e) {
@@ -143,6 +145,12 @@ void ServiceHost::stop() {
 void ServiceHost::wait() {
   for (auto& entry : entries_)
     if (entry->thread.joinable()) entry->thread.join();
+}
+
+bool ServiceHost::failed() const {
+  for (const auto& entry : entries_)
+    if (entry->failed.load()) return true;
+  return false;
 }
 
 bool ServiceHost::finished() const {

@@ -148,8 +148,9 @@ int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, boo
     }
   }
   host->wait();
+  const bool failed = host->failed();
   host.reset();  // closes the transport; queued messages get up to linger_ms to leave
-  return 0;
+  return failed ? 1 : 0;
 }
 
 }  // namespace

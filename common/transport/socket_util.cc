@@ -1,6 +1,8 @@
 #include "common/transport/socket_util.h"
 
+#include <filesystem>
 #include <limits>
+#include <system_error>
 #include <stdexcept>
 
 namespace hexplore::transport::detail {
@@ -17,6 +19,14 @@ void apply_options(zmq::socket_t& socket, const SocketOptions& options) {
 }
 
 std::string bind(zmq::socket_t& socket, const std::string& endpoint) {
+  // ipc endpoints are files: their folder (TransportConfig::ipc_dir) must exist before bind.
+  constexpr std::string_view kIpc = "ipc://";
+  if (endpoint.rfind(kIpc, 0) == 0) {
+    const std::filesystem::path folder = std::filesystem::path(endpoint.substr(kIpc.size())).parent_path();
+    std::error_code error;
+    if (!folder.empty()) std::filesystem::create_directories(folder, error);
+    if (error) throw std::runtime_error("transport: cannot create " + folder.string() + " for " + endpoint + ": " + error.message());
+  }
   try {
     socket.bind(endpoint);
   } catch (const zmq::error_t& e) {

@@ -5,6 +5,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "common/service/service.h"
 #include "common/transport/topics.h"
@@ -48,6 +51,10 @@ class EchoService : public service::Service {
       reply.set_counter(count);
       return reply;
     });
+    // --throw-after-ms N: a callback throws after N ms (tests the failure exit code).
+    if (auto it = ctx.arguments().find("throw-after-ms"); it != ctx.arguments().end())
+      ctx.loop().add_timer(std::chrono::milliseconds(std::stoi(it->second)),
+                           [] { throw std::runtime_error("echo service asked to fail"); });
     setup_done.store(true);
   }
 

@@ -175,6 +175,13 @@ TEST(ServiceHost, ComposesServicesOverInproc) {
   EXPECT_TRUE(host.finished());
 }
 
+TEST(ServiceMain, AServiceThatThrowsEndsTheProcessWithExitCode1) {
+  ChildProcess child({ECHO_SERVICE_PATH, "--config", write_team("throwing"), "--robot", "b", "--throw-after-ms", "50"});
+  EXPECT_EQ(child.wait_exit(10s), 1);
+  EXPECT_NE(child.output().find("stopped by an exception: echo service asked to fail"), std::string::npos)
+      << child.output();
+}
+
 TEST(ServiceMain, ComposedProcessWithFaultInjection) {
   const std::string path = write_team("composed_main");
   ChildProcess child({ECHO_SERVICE_PATH, "--composed", "yes", "--config", path, "--robot", "a", "--robot", "b",

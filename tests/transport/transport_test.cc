@@ -1,6 +1,7 @@
 // In-process transport tests over tcp loopback (ephemeral ports) and inproc.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <thread>
 #include <zmq_addon.hpp>
 
@@ -107,6 +108,20 @@ TEST(Transport, InprocWithSharedContext) {
     loop.run_until([&] { return got > 0; }, 5ms);
   }
   EXPECT_GT(got, 0);
+}
+
+TEST(Transport, IpcEndpointCreatesItsFolder) {
+  Context ctx;
+  const std::string folder = ::testing::TempDir() + "/hexplore_ipc_" + std::to_string(getpid()) + "/nested";
+  Publisher pub(ctx, kR1, "ipc://" + folder + "/r1-sim-pub");
+  Subscriber sub(ctx);
+  sub.connect(pub.endpoint());
+  int got = 0;
+  sub.on<v1::TestPayload>("team/", [&](const Received<v1::TestPayload>&) { ++got; });
+  EventLoop loop;
+  loop.add(sub);
+  handshake(pub, loop, "team/hello", [&] { return got > 0; });
+  std::filesystem::remove_all(folder);
 }
 
 // Raw frames from a plain ZeroMQ PUB socket: every kind of bad frame is counted and dropped,
