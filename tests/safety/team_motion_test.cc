@@ -285,7 +285,7 @@ TEST(TeamMotion, RandomTeamsNeverCollideAndAllArrive) {
   // standing on each other's goals. Decisions on fresh (0.1 s) and on stale (0.2 s) fragments.
   const char* only = std::getenv("SAFETY_SEED");  // replay one seed (with SAFETY_TRACE=1)
   int stuck = 0;
-  for (const auto [dt, every] : {std::pair{0.1, 1}, std::pair{0.05, 4}}) {
+  for (const auto& [dt, every] : {std::pair{0.1, 1}, std::pair{0.05, 4}}) {
     for (uint32_t seed = 1; seed <= 200; ++seed) {
       if (only && seed != static_cast<uint32_t>(std::atoi(only))) continue;
       auto robots = random_team(seed);
