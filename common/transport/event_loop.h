@@ -32,7 +32,7 @@ class EventLoop {
   void remove(Pollable& socket);
 
   // Calls `fn` every `period` (first call one period from now) until cancelled. A timer that
-  // falls behind skips missed ticks instead of bursting.
+  // falls behind skips missed ticks instead of bursting. Loop thread only (or before run()).
   TimerId add_timer(std::chrono::nanoseconds period, std::function<void()> fn);
   void cancel_timer(TimerId id);
 
