@@ -144,6 +144,51 @@ TEST(Terrain, FloorAtTheFootOfAWallIsNotTraversable) {
   EXPECT_EQ(map.find(map.key_of({-1, 0, 0.05}))->low_risk_species_mask, kSlugcatBit | kMr1000Bit);
 }
 
+TEST(Terrain, StairsAreClimbableByTheTrackedSpeciesOnly) {
+  // Five 0.17 m risers with 0.30 m treads, then a landing.
+  PerceptionMap map(two_species_params());
+  std::vector<float> pts;
+  add_floor(pts, -2, 0.07, -1.2, 1.2, 0.05, 0.015);
+  double x = 0.07;
+  double z = 0.05;
+  for (int i = 0; i < 5; ++i) {
+    add_patch(pts, {x, -1.2, z}, {0, 2.4, 0}, {0, 0, 0.17}, 0.015);
+    z += 0.17;
+    add_floor(pts, x, x + (i == 4 ? 2.0 : 0.30), -1.2, 1.2, z, 0.015);
+    x += 0.30;
+  }
+  map.integrate(scan_of(pts, {-1, 0, 1.5}), {});
+  const VoxelKey bottom = map.key_of({-1.5, 0, 0.05});
+  const VoxelKey top = map.key_of({x + 1.0, 0, z - 0.02});  // z = 0.9 sits on a cell border
+  ASSERT_TRUE(map.find(top).has_value());
+  EXPECT_TRUE(testing::reachable(map, bottom, top, kSlugcatBit));
+  EXPECT_FALSE(testing::reachable(map, bottom, top, kMr1000Bit));
+}
+
+TEST(Terrain, IncrementalIntegrationMatchesOneShot) {
+  // The step scene delivered as ten interleaved partial scans ends where one full scan does.
+  const std::vector<float> pts = step_scene(0.15);
+  PerceptionMap once(two_species_params());
+  once.integrate(scan_of(pts, {-1, 0, 1}), {});
+  PerceptionMap incremental(two_species_params());
+  for (int part = 0; part < 10; ++part) {
+    std::vector<float> subset;
+    for (size_t i = part; i < pts.size() / 3; i += 10) subset.insert(subset.end(), &pts[3 * i], &pts[3 * i + 3]);
+    incremental.integrate(scan_of(subset, {-1, 0, 1}), {});
+  }
+  const std::vector<VoxelView> a = once.voxels();
+  const std::vector<VoxelView> b = incremental.voxels();
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].key, b[i].key);
+    EXPECT_EQ(a[i].point_count, b[i].point_count);
+    EXPECT_LT((a[i].mean - b[i].mean).norm(), 1e-4f);
+    EXPECT_GT(a[i].normal.dot(b[i].normal), 0.999f);
+    EXPECT_EQ(a[i].flags & ~kFlagCovered, b[i].flags & ~kFlagCovered) << "at " << a[i].mean.transpose();
+    EXPECT_EQ(a[i].low_risk_species_mask, b[i].low_risk_species_mask) << "at " << a[i].mean.transpose();
+  }
+}
+
 TEST(Terrain, ParamsRejectBadValues) {
   MapParams p = two_species_params();
   p.resolution_m = 0.0;
