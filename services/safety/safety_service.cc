@@ -51,6 +51,11 @@ void SafetyService::setup(service::ServiceContext& context) {
   resolver_ = std::make_unique<ConflictResolver>(robot_id_, species->body_half_extents_m, options);
 
   const auto& args = context.arguments();
+  if (auto it = args.find("decision-clock"); it != args.end()) {
+    if (it->second != "sim" && it->second != "wall")
+      throw std::invalid_argument("safety: --decision-clock expects sim or wall, got '" + it->second + "'");
+    sim_clock_ = it->second == "sim";
+  }
   if (auto it = args.find("wait-for-start"); it != args.end()) {
     if (it->second == "true") {
       mission_ = Mission::kStopped;
@@ -95,6 +100,7 @@ void SafetyService::setup(service::ServiceContext& context) {
     Peer& peer = peers_[id];
     peer.pose = r.message;
     peer.pose_ns = core::monotonic_ns();
+    peer.pose_sim_ns = r.header.sim_time_ns();
   });
   sub.on<v1::PathFragment>(std::string(topics::kTeamPath), [this](const transport::Received<v1::PathFragment>& r) {
     const std::string& id = r.header.robot_id();
@@ -102,13 +108,17 @@ void SafetyService::setup(service::ServiceContext& context) {
     Peer& peer = peers_[id];
     peer.fragment = from_proto(r.message, id);
     peer.fragment_ns = core::monotonic_ns();
+    peer.fragment_sim_ns = r.header.sim_time_ns();
   });
   sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
                              [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
 
   const auto period = std::chrono::duration_cast<std::chrono::nanoseconds>(
       std::chrono::duration<double>(resolver_->options().cycle_s));
-  context.loop().add_timer(period, [this] { cycle(); });
+  context.loop().add_timer(period, [this] {
+    // On the sim clock, decisions follow the poses (see on_pose) while sim time is known.
+    if (!sim_clock_ || sim_time_ns_ == 0) cycle();
+  });
   context.set_state(v1::SERVICE_STATE_RUNNING, mission_ == Mission::kActive ? "waiting for pose" : mission_reason_);
 }
 
@@ -125,6 +135,13 @@ double SafetyService::now_s() const {
 void SafetyService::on_pose(const v1::RobotPose& pose, int64_t sim_time_ns) {
   position_ = vec(pose.pose().position_m());
   if (sim_time_ns > 0) sim_time_ns_ = sim_time_ns;
+  if (sim_clock_ && sim_time_ns > 0) {
+    const int64_t period_ns = core::s_to_ns(resolver_->options().cycle_s);
+    if (last_decision_sim_ns_ < 0 || sim_time_ns - last_decision_sim_ns_ >= period_ns || sim_time_ns < last_decision_sim_ns_) {
+      last_decision_sim_ns_ = sim_time_ns;
+      cycle();
+    }
+  }
 }
 
 void SafetyService::on_path(const v1::ExecutablePath& path) {
@@ -172,13 +189,18 @@ void SafetyService::halt(const std::string& reason) {
   if (position_) share_fragment();
 }
 
-std::vector<Fragment> SafetyService::live_peers(int64_t now_ns) const {
+bool SafetyService::stale(int64_t received_ns, int64_t sent_sim_ns) const {
+  // Sim time when both sides have it (a fast sim ages messages faster than the wall clock).
+  if (sim_time_ns_ > 0 && sent_sim_ns > 0) return sim_time_ns_ - sent_sim_ns > core::s_to_ns(peer_timeout_s_);
+  return core::monotonic_ns() - received_ns > core::s_to_ns(peer_timeout_s_);
+}
+
+std::vector<Fragment> SafetyService::live_peers() const {
   std::vector<Fragment> out;
-  const int64_t timeout_ns = core::s_to_ns(peer_timeout_s_);
   for (const auto& [id, peer] : peers_) {
-    if (peer.fragment && now_ns - peer.fragment_ns < timeout_ns) {
+    if (peer.fragment && !stale(peer.fragment_ns, peer.fragment_sim_ns)) {
       out.push_back(*peer.fragment);
-    } else if (peer.pose && now_ns - peer.pose_ns < timeout_ns) {
+    } else if (peer.pose && !stale(peer.pose_ns, peer.pose_sim_ns)) {
       out.push_back(fragment_from_pose(id, *peer.pose, resolver_->options().eta_p_m));
     }
   }
@@ -198,7 +220,7 @@ void SafetyService::cycle() {
     return;
   }
   const Decision decision =
-      resolver_->decide(*position_, desired_, path_speed_mps_, live_peers(core::monotonic_ns()), now_s());
+      resolver_->decide(*position_, desired_, path_speed_mps_, live_peers(), now_s());
   last_ = decision;
   v1::MotionCommand command = to_motion_command(decision);
   if (decision.kind == DecisionKind::kFollow && look_at_) {

@@ -27,7 +27,10 @@ class SafetyService : public service::Service {
  public:
   core::ServiceKind kind() const override { return core::ServiceKind::kSafety; }
   // Options (after --config/--robot): --wait-for-start true|false (default false: drive as soon
-  // as planning sends a path; true: hold still until the station's StartMission).
+  // as planning sends a path; true: hold still until the station's StartMission);
+  // --decision-clock sim|wall (default sim: decide every 0.2 s of the driver's sim time, taken
+  // from its pose messages, so a faster or lockstep sim gets the same decisions; wall: every
+  // 0.2 s of wall time). Without sim time in the poses, wall time is used either way.
   void setup(service::ServiceContext& context) override;
   void on_shutdown(service::ServiceContext& context) override;
   void fill_status(v1::ServiceStatus& status) override;
@@ -37,8 +40,10 @@ class SafetyService : public service::Service {
   struct Peer {
     std::optional<Fragment> fragment;
     int64_t fragment_ns = 0;          // monotonic receive time
+    int64_t fragment_sim_ns = 0;      // sim time stamped by the sender (0 = none)
     std::optional<v1::RobotPose> pose;
     int64_t pose_ns = 0;
+    int64_t pose_sim_ns = 0;
   };
 
   void on_pose(const v1::RobotPose& pose, int64_t sim_time_ns);
@@ -47,7 +52,9 @@ class SafetyService : public service::Service {
   // One decision: resolve, command the driver, share the fragment.
   void cycle();
   void halt(const std::string& reason);
-  std::vector<Fragment> live_peers(int64_t now_ns) const;
+  std::vector<Fragment> live_peers() const;
+  // Whether a message received at (wall, sim) is too old to act on.
+  bool stale(int64_t received_ns, int64_t sent_sim_ns) const;
   void publish(const v1::MotionCommand& command);
   void share_fragment();
   double now_s() const;
@@ -59,6 +66,8 @@ class SafetyService : public service::Service {
   double peer_timeout_s_ = 1.5;
   std::optional<Eigen::Vector3d> position_;
   int64_t sim_time_ns_ = 0;
+  bool sim_clock_ = true;              // --decision-clock sim
+  int64_t last_decision_sim_ns_ = -1;
   Path desired_;
   double path_speed_mps_ = 0.0;
   std::optional<Eigen::Vector3d> look_at_;

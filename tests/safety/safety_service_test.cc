@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <optional>
 
@@ -63,6 +64,7 @@ class SafetyServiceTest : public ::testing::Test {
     sim_ = bind("r1", ServiceKind::kSim);
     planning_ = bind("r1", ServiceKind::kPlanning);
     peer_ = bind("r2", ServiceKind::kSafety);
+    peer_sim_ = bind("r2", ServiceKind::kSim);
     station_ = bind(std::string(core::kStationId), ServiceKind::kStation);
     watch_ = std::make_unique<transport::Subscriber>(host_->transport());
     watch_->on<v1::MotionCommand>(topics::motion("r1"), [this](const transport::Received<v1::MotionCommand>& r) {
@@ -81,6 +83,7 @@ class SafetyServiceTest : public ::testing::Test {
     sim_.reset();
     planning_.reset();
     peer_.reset();
+    peer_sim_.reset();
     station_.reset();
     host_.reset();
   }
@@ -99,10 +102,12 @@ class SafetyServiceTest : public ::testing::Test {
     return false;
   }
 
+  // Each pose advances the driver's sim time by 50 ms (the feed runs every 50 ms of wall time).
   void send_pose(double x, double y) {
     v1::RobotPose pose;
     set(pose.mutable_pose()->mutable_position_m(), x, y);
-    sim_->publish(topics::pose("r1"), pose, 1);
+    sim_time_ns_ += 50'000'000;
+    sim_->publish(topics::pose("r1"), pose, sim_time_ns_);
   }
   void send_path(double x0, double y0, double x1, double y1) {
     v1::ExecutablePath path;
@@ -121,10 +126,11 @@ class SafetyServiceTest : public ::testing::Test {
   bool stopped() const { return last_motion_ && last_motion_->has_stop(); }
 
   std::unique_ptr<service::ServiceHost> host_;
-  std::unique_ptr<transport::Publisher> sim_, planning_, peer_, station_;
+  std::unique_ptr<transport::Publisher> sim_, planning_, peer_, peer_sim_, station_;
   std::unique_ptr<transport::Subscriber> watch_;
   std::optional<v1::MotionCommand> last_motion_;
   std::optional<v1::PathFragment> last_fragment_;
+  int64_t sim_time_ns_ = 0;
 };
 
 TEST_F(SafetyServiceTest, ApprovesAFreePathAndSharesOnlyEtaP) {
@@ -173,12 +179,30 @@ TEST_F(SafetyServiceTest, YieldsToATeammateArrivingFirst) {
   const auto feed = [&] {
     send_pose(0, 0);
     send_path(0, 0, 10, 0);
-    peer_->publish(topics::kTeamPath, r2);
+    peer_->publish(topics::kTeamPath, r2, sim_time_ns_);
   };
   ASSERT_TRUE(until(feed, [&] { return last_fragment_ && last_fragment_->yielding_to() == "r2"; }));
   // Either stopped or cut short well before r2's path.
   if (last_motion_->has_follow()) {
     EXPECT_LT(last_motion_->follow().waypoints_m().rbegin()->x(), 3.0 - 1.0);
+  }
+}
+
+TEST_F(SafetyServiceTest, TeammateKnownOnlyByItsPoseIsDrivenAround) {
+  // r2's safety service is silent; its driver's team/pose shows it standing on r1's path.
+  v1::RobotPose r2;
+  set(r2.mutable_pose()->mutable_position_m(), 4, 0);
+  r2.mutable_body_half_extents_m()->set_x(0.5);
+  r2.mutable_body_half_extents_m()->set_y(0.35);
+  r2.mutable_body_half_extents_m()->set_z(0.4);
+  const auto feed = [&] {
+    send_pose(0, 0);
+    send_path(0, 0, 10, 0);
+    peer_sim_->publish(topics::kTeamPose, r2, sim_time_ns_);
+  };
+  ASSERT_TRUE(until(feed, [&] { return following_to(10, 0) && last_motion_->follow().waypoints_m_size() > 2; }));
+  for (const auto& w : last_motion_->follow().waypoints_m()) {
+    EXPECT_GT(std::hypot(w.x() - 4, w.y()), 0.61 + 0.54) << w.x() << "," << w.y();
   }
 }
 
