@@ -1,6 +1,7 @@
 #include "common/sim/scenes.h"
 
 #include <cmath>
+#include <filesystem>
 
 #include "common/sim/scene_error.h"
 #include "common/sim/scene_parts.h"
@@ -32,6 +33,14 @@ SceneInfo load_scene(const std::string& name_or_path, uint64_t seed, const MeshI
   const Eigen::AlignedBox3f b = info.mesh.bounds();
   info.site = Eigen::AlignedBox3d(b.min().cast<double>(), b.max().cast<double>());
   return info;
+}
+
+std::string resolve_scene(const std::string& scene, const std::string& team_file) {
+  namespace fs = std::filesystem;
+  if (is_builtin_scene(scene) || team_file.empty() || fs::path(scene).is_absolute()) return scene;
+  const fs::path beside = fs::path(team_file).parent_path() / scene;
+  std::error_code ec;
+  return fs::exists(beside, ec) ? beside.string() : scene;
 }
 
 namespace detail {

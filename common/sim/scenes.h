@@ -32,4 +32,8 @@ SceneInfo generate_scene(const std::string& name, uint64_t seed);
 // (site = the mesh bounds, no suggested starts).
 SceneInfo load_scene(const std::string& name_or_path, uint64_t seed, const MeshImportOptions& options = {});
 
+// The scene a team file names, ready for load_scene: built-in names unchanged; a relative
+// mesh path is taken relative to the team file's folder when a file exists there.
+std::string resolve_scene(const std::string& scene, const std::string& team_file);
+
 }  // namespace hexplore::sim

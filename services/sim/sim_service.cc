@@ -90,12 +90,7 @@ void SimService::load_world(service::ServiceContext& context) {
   if (auto it = args.find("scene-up"); it != args.end()) import.up_axis = parse_up_axis(it->second, "--scene-up");
   import.scale = number_option(context, "scene-scale", 1.0, 1e-6, 1e6);
   import.yaw_deg = number_option(context, "scene-yaw-deg", 0.0, -360, 360);
-  std::string scene = team.scene;
-  if (!is_builtin_scene(scene) && std::filesystem::path(scene).is_relative() && !team.source_file.empty()) {
-    // A mesh path in a team file is relative to that file.
-    const auto beside = std::filesystem::path(team.source_file).parent_path() / scene;
-    if (std::filesystem::exists(beside)) scene = beside.string();
-  }
+  const std::string scene = resolve_scene(team.scene, team.source_file);
   scene_ = load_scene(scene, team.params.seed, import);
   caster_ = std::make_unique<RayCaster>(scene_.mesh);
   if (auto it = args.find("scene-dir"); it != args.end() && is_builtin_scene(scene)) {
