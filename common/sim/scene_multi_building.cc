@@ -57,6 +57,10 @@ SceneInfo make_multi_building(uint64_t seed) {
   floor_debris(b, rng, Rect{12.5, 32.0, 19.5, 37.0}, 5, 0.7, 0.0);
   floor_debris(b, rng, Rect{5.0, 32.0, 19.0, 37.0}, 5, 0.7, 4.0);
 
+  // Damage: a roof slab of B2 slid down its east facade, another leaning on B3's west wall.
+  b.oriented_box({38.0, 12.0, 2.6}, {0.12, 3.0, 2.9}, 0.0, 0.45, 0.0);
+  b.oriented_box({1.0, 33.0, 1.8}, {0.12, 2.5, 2.0}, 0.0, -0.4, 0.0);
+
   // Outdoors: rough ground (low irregular slabs), rubble heaps, a terrace reached by steps,
   // stones and vehicles. The street x in [15, 24], y < 20 stays open for the start area.
   debris_field(b, rng, Rect{24.0, 19.5, 30.0, 24.5}, 1.0, 0.02, 0.07);

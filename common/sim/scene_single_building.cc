@@ -46,6 +46,11 @@ SceneInfo make_single_building(uint64_t seed) {
   add_wall(b, {23.0, 21.125}, {32.0, 21.125}, 0.25, 0.0, 2.5, {{5.0, 7.5, 0, 2.5}});
   debris_field(b, rng, Rect{23.25, 14.0, 31.75, 21.5}, 0.5, 0.10, 0.20);
 
+  // Damage: a floor slab fallen against the north facade (an overhang to drive under or
+  // not, by clearance) and wall rubble heaped against the west facade, clear of the doors.
+  b.oriented_box({16.0, 20.4, 1.55}, {2.0, 1.6, 0.12}, 0.0, 0.0, -1.05);
+  rubble_pile(b, rng, {2.0, 16.5}, 1.4, 12, 1.1);
+
   // Outdoors: a vehicle, rubble piles and stones, away from the start area and the doors.
   vehicle(b, {27.0, -3.5}, 0.1);
   rubble_pile(b, rng, {22.0 + rng.uniform(-0.5, 0.5), 26.0}, 2.0, 14, 1.2);
