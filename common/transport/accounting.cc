@@ -17,11 +17,20 @@ Accounting::Accounting(std::string robot_id, std::string service, const metrics:
 
 Accounting::Line& Accounting::line(Lines& lines, metrics::CounterFamily* messages, metrics::CounterFamily* bytes,
                                    std::string_view topic, std::string_view peer) {
-  topic = topics::topic_label(topic);
-  peer = topics::peer_label(peer);
+  // Maps hold only label values, so a raw topic or peer that is found is already a valid label;
+  // the label functions run only on a miss (first message of a topic, or an invalid one).
   auto by_topic = lines.find(topic);
-  if (by_topic == lines.end()) by_topic = lines.emplace(std::string(topic), PeerLines{}).first;
+  if (by_topic == lines.end()) {
+    topic = topics::topic_label(topic);
+    by_topic = lines.find(topic);
+    if (by_topic == lines.end()) by_topic = lines.emplace(std::string(topic), PeerLines{}).first;
+  }
+  topic = by_topic->first;
   auto by_peer = by_topic->second.find(peer);
+  if (by_peer == by_topic->second.end()) {
+    peer = topics::peer_label(peer);
+    by_peer = by_topic->second.find(peer);
+  }
   if (by_peer == by_topic->second.end()) {
     Line fresh;
     if (families_ != nullptr) {
@@ -57,8 +66,9 @@ void Accounting::record_received(std::string_view topic, std::string_view peer, 
     l.messages->increment();
     l.bytes->increment(static_cast<double>(bytes));
   }
-  const std::string_view label = topics::topic_label(topic);
-  auto it = latency_.find(label);
+  auto it = latency_.find(topic);
+  const std::string_view label = it == latency_.end() ? topics::topic_label(topic) : topic;
+  if (it == latency_.end()) it = latency_.find(label);
   if (it == latency_.end()) {
     TopicLine fresh;
     if (families_ != nullptr)

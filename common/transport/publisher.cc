@@ -34,7 +34,9 @@ uint64_t Publisher::last_sequence(std::string_view topic) const {
 
 bool Publisher::publish_message(std::string_view topic, std::string_view payload_type,
                                 const google::protobuf::MessageLite& message, int64_t sim_time_ns) {
-  if (!topics::is_valid_topic(topic)) {
+  // A topic already in the sequence map was validated when it was first published.
+  auto it = sequences_.find(topic);
+  if (it == sequences_.end() && !topics::is_valid_topic(topic)) {
     if (accounting_) accounting_->record_dropped(topic, DropReason::kMalformed);
     core::log_once(core::LogLevel::kError, "transport", "publish-invalid-topic:" + std::string(topics::topic_label(topic)),
                    "refusing to publish on invalid topic '" + std::string(topic).substr(0, 64) + "'");
@@ -48,7 +50,6 @@ bool Publisher::publish_message(std::string_view topic, std::string_view payload
                        ": above max_message_bytes " + std::to_string(options_.max_message_bytes));
     return false;
   }
-  auto it = sequences_.find(topic);
   if (it == sequences_.end()) it = sequences_.emplace(std::string(topic), 0).first;
   const uint64_t sequence = ++it->second;
   const bool faulty = options_.faults.active() && options_.faults.applies_to(topic);
