@@ -200,6 +200,25 @@ TEST(Launcher, LogDirGetsOneFilePerProcess) {
   fs::remove_all("logs", ec);
 }
 
+TEST(Launcher, FastModeRunsOneComposedProcessBesideTheStation) {
+  Launch launch({"--bin-dir", FAKE_BIN_DIR, "--compose"}, {{"FAKE_EXIT", "station:5"}});
+  EXPECT_EQ(launch.wait_exit(), 5) << launch.output();
+  EXPECT_NE(launch.output().find("started team (pid"), std::string::npos) << launch.output();
+  EXPECT_EQ(launch.count("fake r2/team pid"), 1u);  // the fake names itself by its last --robot
+  EXPECT_EQ(launch.count("started\n"), 2u);
+  EXPECT_EQ(launch.count("started r1/"), 0u);
+}
+
+TEST(Launcher, FastModeWithoutStationEndsWithTheComposedProcess) {
+  Launch launch({"--bin-dir", FAKE_BIN_DIR, "--compose", "--services", "sim"}, {{"FAKE_EXIT", "r2/team:0"}});
+  EXPECT_EQ(launch.wait_exit(), 0) << launch.output();
+  EXPECT_NE(launch.output().find("team (pid"), std::string::npos);
+  Launch missing({"--bin-dir", FAKE_BIN_DIR, "--compose", "hexplore_nothing"});
+  EXPECT_EQ(missing.wait_exit(), 2);
+  EXPECT_NE(missing.output().find("missing executable hexplore_nothing (fast mode"), std::string::npos)
+      << missing.output();
+}
+
 TEST(Launcher, BadArgumentsAreExplained) {
   Launch unknown_robot({"--bin-dir", FAKE_BIN_DIR, "--robots", "r9"});
   EXPECT_EQ(unknown_robot.wait_exit(), 2);

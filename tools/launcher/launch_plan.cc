@@ -88,7 +88,21 @@ LaunchPlan plan_launch(const core::TeamConfig& team, const LaunchRequest& reques
   };
 
   LaunchPlan plan;
-  for (const auto& id : robots) {
+  if (!request.compose_executable.empty()) {
+    ProcessSpec p;
+    p.name = "team";
+    p.service = "team";
+    p.executable = find_executable(dirs_for("team"), request.compose_executable);
+    p.arguments = {"--config", request.config_path};
+    for (const auto& id : robots) p.arguments.insert(p.arguments.end(), {"--robot", id});
+    p.arguments.insert(p.arguments.end(), request.extra_arguments.begin(), request.extra_arguments.end());
+    if (p.executable.empty()) {
+      plan.missing.push_back(request.compose_executable + " (fast mode: every service in one process) not found in " +
+                             joined(dirs_for("team")));
+    }
+    plan.processes.push_back(std::move(p));
+  }
+  for (const auto& id : request.compose_executable.empty() ? robots : std::vector<std::string>{}) {
     for (const auto& service : robot_services()) {
       if (std::find(services.begin(), services.end(), service) == services.end()) continue;
       ProcessSpec p;
@@ -113,12 +127,16 @@ LaunchPlan plan_launch(const core::TeamConfig& team, const LaunchRequest& reques
     p.executable = find_executable(dirs_for("station"), executable_name("station"));
     p.arguments = {"--config", request.config_path};
     p.arguments.insert(p.arguments.end(), request.extra_arguments.begin(), request.extra_arguments.end());
+    p.ends_launch = true;
     if (!p.executable.empty()) {
       plan.processes.push_back(std::move(p));
     } else if (!station_optional) {
       plan.missing.push_back(executable_name("station") + " (for the station) not found in " + joined(dirs_for("station")));
     }
   }
+  const bool has_station = std::any_of(plan.processes.begin(), plan.processes.end(),
+                                       [](const ProcessSpec& p) { return p.is_station; });
+  if (!request.compose_executable.empty() && !has_station) plan.processes.front().ends_launch = true;
   return plan;
 }
 

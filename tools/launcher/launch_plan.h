@@ -19,6 +19,7 @@ struct ProcessSpec {
   std::string executable;            // resolved path ("" when not found)
   std::vector<std::string> arguments;  // argv[1..]
   bool is_station = false;
+  bool ends_launch = false;            // its exit ends the launch with its exit code
 };
 
 struct LaunchRequest {
@@ -27,6 +28,9 @@ struct LaunchRequest {
   std::vector<std::string> robots;         // empty = every robot of the team
   std::vector<std::string> services;       // empty = the five robot services + station if built
   std::vector<std::string> extra_arguments;  // appended to every child's arguments
+  // Fast mode: instead of one process per service, this one executable hosts every service of
+  // the selected robots (run with --config FILE --robot A --robot B ...); "" = off.
+  std::string compose_executable;
 };
 
 // The five per-robot services in start order.
@@ -45,7 +49,8 @@ struct LaunchPlan {
 
 // Builds the plan; throws std::invalid_argument for unknown robots or services (listing the
 // known ones). The station is included when asked for, or when not filtered and its
-// executable exists.
+// executable exists; it ends the launch. In fast mode the composed process ends the launch
+// when there is no station.
 LaunchPlan plan_launch(const core::TeamConfig& team, const LaunchRequest& request, const std::string& launcher_path);
 
 // Splits "a,b,c" (empty items dropped).

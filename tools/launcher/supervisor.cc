@@ -218,11 +218,11 @@ void Supervisor::on_child_exit(Child& child, int status) {
   child.running = false;
   child.status = status;
   const std::string what = child.spec.name + " (pid " + std::to_string(child.pid) + ") " + describe_wait_status(status);
-  if (child.spec.is_station && !shutting_down_) {
+  if (child.spec.ends_launch && !shutting_down_) {
     station_ended_ = true;
     station_code_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    log(what + ": mission over, stopping the team");
-    begin_shutdown("station ended");
+    log(what + (child.spec.is_station ? ": mission over, stopping the team" : ": stopping the rest"));
+    begin_shutdown(child.spec.name + " ended");
     return;
   }
   if (shutting_down_ && child.expected_exit) {

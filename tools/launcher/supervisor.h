@@ -2,7 +2,8 @@
 // Runs a set of child processes and watches them: their output lines are prefixed with the
 // process name (or go to one log file each), a stop signal is forwarded to all of them with a
 // grace period before SIGKILL, and a process that ends on its own is reported by name with its
-// exit status or signal. The station's exit ends the whole launch (the mission is over).
+// exit status or signal. The station's exit ends the whole launch (the mission is over), and so
+// does the composed team process of fast mode when there is no station.
 
 #include <sys/types.h>
 
@@ -37,9 +38,9 @@ class Supervisor {
   // until run() or the destructor stops them.
   void start(const std::vector<ProcessSpec>& processes);
 
-  // Watches until the station exits, a stop signal arrives, every process has ended, or (with
-  // exit_on_failure) one fails; then stops the rest. Returns the launcher's exit code: the
-  // station's when it ended the launch, else 0 when nothing failed, 1 otherwise.
+  // Watches until a launch-ending process (station) exits, a stop signal arrives, every process
+  // has ended, or (with exit_on_failure) one fails; then stops the rest. Returns the launcher's
+  // exit code: that process's when it ended the launch, else 0 when nothing failed, 1 otherwise.
   int run();
 
  private:
@@ -61,7 +62,7 @@ class Supervisor {
   bool shutting_down_ = false;
   bool killed_ = false;
   double kill_deadline_s_ = 0.0;
-  bool station_ended_ = false;
+  bool station_ended_ = false;  // a process that ends the launch (station, fast-mode team) ended
   int station_code_ = 0;
   int failures_ = 0;
 };
