@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "common/safety/fragment.h"
 
 namespace hexplore::safety {
 
@@ -54,28 +53,6 @@ std::optional<Conflict> find_conflict(const Path& own, const Path& peer, double 
 double time_to_reach(double distance_m, double speed_mps) {
   if (!(speed_mps > 1e-9)) return std::numeric_limits<double>::infinity();
   return std::max(0.0, distance_m) / speed_mps;
-}
-
-double Fragment::body_radius_m() const {
-  return 0.5 * std::max(box_max_m.x() - box_min_m.x(), box_max_m.y() - box_min_m.y());
-}
-
-Path Fragment::path() const {
-  Path out{position_m};
-  for (const auto& w : waypoints_m) {
-    if (distance_xy(w, out.back()) > 1e-9) out.push_back(w);
-  }
-  return out;
-}
-
-double body_radius_of(const Eigen::Vector3d& half_extents_m) { return half_extents_m.head<2>().norm(); }
-
-void body_box_any_yaw(const Eigen::Vector3d& p, const Eigen::Vector3d& half_extents_m, Eigen::Vector3d& box_min,
-                      Eigen::Vector3d& box_max) {
-  const double r = body_radius_of(half_extents_m);
-  const Eigen::Vector3d h(r, r, half_extents_m.z());
-  box_min = p - h;
-  box_max = p + h;
 }
 
 }  // namespace hexplore::safety

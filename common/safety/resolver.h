@@ -3,6 +3,10 @@
 // the robot's desired path is detoured around stationary teammates' boxes, checked against the
 // moving teammates' shared fragments, and cut short where the robot must yield. The robot that
 // would reach the conflict zone later yields; near-equal times go to the lower robot id.
+// Nobody waits forever: a circle of robots waiting for each other lets its lowest id go; a
+// robot blocked by this one's box makes this one go first; a yield to a robot that stopped for
+// reasons of its own ends after a timeout; and of two robots blocking each other, the higher
+// id steps aside.
 
 #include <cstdint>
 #include <map>
