@@ -55,6 +55,9 @@ struct PlannerOptions {
   uint64_t seed = 1;
   int mnss_samples = 16;        // view sets sampled per cluster
   double min_view_separation_m = 1.0;  // MNSS rejects views this close to a chosen one
+  // Clock of the stage timings and the GA time budget: wall time in services; the thread's
+  // CPU time in benchmarks on a shared machine.
+  bool cpu_clock = false;
 
   static PlannerOptions from(const core::AlgorithmParams& params);
 };

@@ -16,7 +16,7 @@
 namespace hexplore::planning {
 namespace {
 
-double seconds_since(int64_t t0) { return core::ns_to_s(core::monotonic_ns() - t0); }
+
 
 // A seed every robot derives alike from shared state (the option seed and the cluster ids),
 // so identical maps give identical GA runs whatever each robot's local round counter says.
@@ -103,6 +103,8 @@ ExecutablePlan executable_path(const highlevel::TopologyGraph& graph, const Eige
 }
 
 PlanResult HexplorePlanner::plan(const PlanRequest& req) {
+  const BudgetClock clock = context_.options.cpu_clock ? BudgetClock::kThreadCpu : BudgetClock::kWall;
+  auto now = [clock] { return budget_clock_ns(clock); };
   if (!configured_) throw std::logic_error(name() + ": plan() before configure()");
   if (!req.map) throw std::invalid_argument(name() + ": no map in the request");
   if (req.self < 0 || size_t(req.self) >= req.robots.size())
@@ -114,7 +116,7 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
   if (ablation_ == Ablation::kNoAssign) return plan_voronoi(req, team);
 
   const PlannerOptions& o = context_.options;
-  const int64_t t0 = core::monotonic_ns();
+  const int64_t t0 = now();
   PlanResult out;
   out.round = req.round;
   out.planner = name();
@@ -123,14 +125,14 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
   const MapContext ctx(*req.map, o);
   const std::vector<TaskView> views = generate_task_views(ctx, team, o, &out.view_stats);
   out.views = int(views.size());
-  const int64_t t1 = core::monotonic_ns();
+  const int64_t t1 = now();
   out.times.views_s = core::ns_to_s(t1 - t0);
 
   // Clustering.
   const std::vector<TaskCluster> clusters =
       ablation_ == Ablation::kNoCluster ? singleton_clusters(views) : cluster_views(views, o.eta_r_m);
   out.clusters = int(clusters.size());
-  const int64_t t2 = core::monotonic_ns();
+  const int64_t t2 = now();
   out.times.clustering_s = core::ns_to_s(t2 - t1);
 
   // Assignment.
@@ -156,13 +158,14 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
     ga.time_budget_s = o.ga_time_budget_s;
     ga.seed = shared_seed(o.seed, city_ids);
     ga.local_search = LocalSearchMode::kMemetic;
+    ga.budget_clock = clock;
     if (ref) ga.seeds.push_back(reference_seed(inst.problem, city_ids, *ref, req.robots));
     const GaResult result = solve_ga(model, ga);
     routes = result.routes;
     out.fitness = result.breakdown.fitness;
     out.ga_generations = result.generations;
   }
-  const int64_t t3 = core::monotonic_ns();
+  const int64_t t3 = now();
   out.times.assignment_s = core::ns_to_s(t3 - t2);
 
   // Team solution: cluster sequences, lengths and costs.
@@ -217,23 +220,25 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
     }
     tour.insert(tour.end(), part.begin(), part.end());
   }
-  const int64_t t4 = core::monotonic_ns();
+  const int64_t t4 = now();
   out.times.mnss_s = core::ns_to_s(t4 - t3);
   if (!tour.empty()) out.path = executable_path(graph, me.position, me.species, tour.front());
-  out.times.total_s = seconds_since(t0);
+  out.times.total_s = core::ns_to_s(now() - t0);
   return out;
 }
 
 PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapabilities& team) {
+  const BudgetClock clock = context_.options.cpu_clock ? BudgetClock::kThreadCpu : BudgetClock::kWall;
+  auto now = [clock] { return budget_clock_ns(clock); };
   const PlannerOptions& o = context_.options;
-  const int64_t t0 = core::monotonic_ns();
+  const int64_t t0 = now();
   PlanResult out;
   out.round = req.round;
   out.planner = name();
   const MapContext ctx(*req.map, o);
   const std::vector<TaskView> views = generate_task_views(ctx, team, o, &out.view_stats);
   out.views = int(views.size());
-  const int64_t t1 = core::monotonic_ns();
+  const int64_t t1 = now();
   out.times.views_s = core::ns_to_s(t1 - t0);
 
   // Dynamic Voronoi partition: each view goes to the nearest (graph distance) robot whose
@@ -255,7 +260,7 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
     if (best >= 0) owned[size_t(best)].push_back(int(v));
     else ++out.dropped_clusters;
   }
-  const int64_t t2 = core::monotonic_ns();
+  const int64_t t2 = now();
   out.times.assignment_s = core::ns_to_s(t2 - t1);
 
   out.robots.resize(R);
@@ -280,12 +285,12 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
     }
   }
   out.clusters = int(views.size()) - out.dropped_clusters;
-  out.times.mnss_s = seconds_since(t2);
+  out.times.mnss_s = core::ns_to_s(now() - t2);
   const RobotPlan& me = out.robots[size_t(req.self)];
   if (!me.route.empty())
     out.path = executable_path(graph, req.robots[size_t(req.self)].position, req.robots[size_t(req.self)].species,
                                me.route.front());
-  out.times.total_s = seconds_since(t0);
+  out.times.total_s = core::ns_to_s(now() - t0);
   return out;
 }
 
