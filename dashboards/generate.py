@@ -65,6 +65,12 @@ def panel(title, description, exprs, unit="short", kind="timeseries", stack=Fals
     elif kind == "stat":
         p["options"] = {"reduceOptions": {"calcs": ["lastNotNull"], "fields": "", "values": False},
                         "colorMode": "value", "graphMode": "none", "textMode": "value_and_name"}
+    elif kind == "state-timeline":
+        p["options"] = {"showValue": "never", "mergeValues": True, "rowHeight": 0.8,
+                        "legend": {"showLegend": True, "displayMode": "list", "placement": "bottom"}}
+        p["fieldConfig"]["defaults"]["mappings"] = [
+            {"type": "value", "options": {"0": {"text": "driving", "color": "green", "index": 0},
+                                          "1": {"text": "yielding", "color": "orange", "index": 1}}}]
     elif kind == "table":
         p["options"] = {"showHeader": True}
         for t in p["targets"]:
@@ -166,7 +172,19 @@ def communication():
 
 
 def communication_map_panels():
-    return []
+    detected, repaired = "hexplore_hlmap_gaps_detected_total", "hexplore_hlmap_gaps_repaired_total"
+    return [
+        panel("Map increment gaps detected and repaired",
+              "Gaps in peers' team/map sequences seen by each robot's hlmap, and those closed by a repair "
+              "snapshot (ZeroMQ Clone pattern); detected minus repaired is what is still missing.",
+              [(f"sum by (robot) ({detected}{{{ROBOT}}})", "{{robot}} detected"),
+               (f"sum by (robot) ({repaired}{{{ROBOT}}})", "{{robot}} repaired")], unit="short"),
+        panel("Map repair requests and snapshots",
+              "MapRepairRequests each robot sent to peers, and MapSnapshots it served them.",
+              [(f"sum by (robot) (hexplore_hlmap_repair_requests_total{{{ROBOT}}})", "{{robot}} requested"),
+               (f"sum by (robot) (hexplore_hlmap_snapshots_served_total{{{ROBOT}}})", "{{robot}} served")],
+              unit="short"),
+    ]
 
 
 # ---------------------------------------------------------------- services
@@ -202,8 +220,38 @@ def services():
                      "Per-service cost: CPU, pipeline stage durations, dropped and rejected messages.", panels)
 
 
+def quantiles(metric, by, legend, selector=ROBOT):
+    """p50 and p99 of a histogram, grouped by `by`."""
+    return [(f"histogram_quantile({q}, sum by (le, {by}) ({rate(metric + '_bucket', selector)}))",
+             f"{legend} p{round(q * 100)}") for q in (0.5, 0.99)]
+
+
 def service_stage_panels():
-    return []
+    return [
+        panel("sim: LiDAR frame casting", "Time to ray-cast one LiDAR frame against the scene, per robot.",
+              quantiles("hexplore_sim_scan_seconds", "robot", "{{robot}}"), unit="s"),
+        panel("mapping: scan integration", "Time to integrate one scan into the perception map, per robot.",
+              quantiles("hexplore_mapping_scan_integration_seconds", "robot", "{{robot}}"), unit="s"),
+        panel("hlmap: segmentation, topology update, fusion",
+              "Supervoxel segmentation per voxel delta, topology update per window, fusion per peer increment "
+              "(all robots).",
+              quantiles("hexplore_hlmap_segmentation_seconds", "service", "segmentation")
+              + quantiles("hexplore_hlmap_topology_update_seconds", "service", "topology update")
+              + quantiles("hexplore_hlmap_fusion_seconds", "service", "fusion"), unit="s"),
+        panel("planning: stage durations",
+              "Single-round planning time per stage (views, clustering, assignment, mnss, total), all robots.",
+              quantiles("hexplore_planning_stage_seconds", "stage", "{{stage}}"), unit="s"),
+        panel("mapping: scans rejected and points dropped, by reason",
+              "Scans the mapping service refused and points it dropped from accepted scans.",
+              [(f"sum by (robot, reason) ({rate('hexplore_mapping_scans_rejected_total', ROBOT)})",
+                "{{robot}} scans {{reason}}"),
+               (f"sum by (robot, reason) ({rate('hexplore_mapping_points_dropped_total', ROBOT)})",
+                "{{robot}} points {{reason}}")], unit="short"),
+        panel("Throughput: points integrated, rays cast",
+              "Points the mapping service integrates and rays the simulator casts, per second.",
+              [(f"sum by (robot) ({rate('hexplore_mapping_points_total', ROBOT)})", "{{robot}} points/s"),
+               (f"sum by (robot) (hexplore_sim_rays_per_second{{{ROBOT}}})", "{{robot}} rays/s")], unit="short"),
+    ]
 
 
 # ---------------------------------------------------------------- team overview
@@ -220,7 +268,52 @@ def team_overview():
 
 
 def team_panels():
-    return []
+    stage = "hexplore_planning_stage_seconds"
+    total = f'{ROBOT}, stage="total"'
+    return [
+        panel("Planning time per round",
+              "Single-round planning time (all stages) per robot: mean over the window and p99.",
+              [(f"sum by (robot) ({rate(stage + '_sum', total)}) / sum by (robot) ({rate(stage + '_count', total)})",
+                "{{robot}} mean"),
+               (f"histogram_quantile(0.99, sum by (le, robot) ({rate(stage + '_bucket', total)}))",
+                "{{robot}} p99")], unit="s"),
+        panel("Active planner",
+              "The planner each robot runs now (switchable at run time from the station).",
+              [(f"max by (robot, planner) (hexplore_planning_planner_active{{{ROBOT}}}) == 1", "{{robot}}: {{planner}}")],
+              unit="short", kind="table"),
+        panel("Task views left",
+              "Task views (incomplete surfaces to observe) in each robot's last planning round; "
+              "the exploration ends when none are left.",
+              [(f"max by (robot) (hexplore_planning_views{{{ROBOT}}})", "{{robot}}")], unit="short"),
+        panel("Assignment agreement",
+              "Share of clusters each robot assigns as its reference solution does: how consistent the "
+              "decentralized plans are.",
+              [(f"max by (robot) (hexplore_planning_assignment_agreement_ratio{{{ROBOT}}})", "{{robot}}")],
+              unit="percentunit"),
+        panel("Map size per robot",
+              "Perception voxels mapped and supervoxels in the fused high-level map.",
+              [(f"max by (robot) (hexplore_mapping_voxels{{{ROBOT}}})", "{{robot}} voxels"),
+               (f"max by (robot) (hexplore_hlmap_supervoxels{{{ROBOT}}})", "{{robot}} supervoxels")],
+              unit="short"),
+        panel("Trajectory length",
+              "Distance each robot has travelled (simulator odometry).",
+              [(f"max by (robot) (hexplore_sim_odometry_meters{{{ROBOT}}})", "{{robot}}")], unit="m"),
+        panel("Robot state: yielding to a teammate",
+              "1 while a robot's safety service holds it for a teammate (path conflict), 0 while it drives on.",
+              [(f"max by (robot) (hexplore_safety_yielding{{{ROBOT}}})", "{{robot}}")], unit="short",
+              kind="state-timeline"),
+        panel("Robot events",
+              "Path conflicts, yields and detours (safety); blocked terrain and collisions (sim), cumulative.",
+              [(f"sum by (robot) (hexplore_safety_conflicts_total{{{ROBOT}}})", "{{robot}} conflicts"),
+               (f"sum by (robot) (hexplore_safety_yields_total{{{ROBOT}}})", "{{robot}} yields"),
+               (f"sum by (robot) (hexplore_safety_detours_total{{{ROBOT}}})", "{{robot}} detours"),
+               (f"sum by (robot) (hexplore_sim_blocked_total{{{ROBOT}}})", "{{robot}} blocked"),
+               (f"sum by (robot) (hexplore_sim_collisions_total{{{ROBOT}}})", "{{robot}} collisions")],
+              unit="short"),
+        panel("Simulation time",
+              "Each robot's simulation clock.",
+              [(f"max by (robot) (hexplore_sim_time_seconds{{{ROBOT}}})", "{{robot}}")], unit="s"),
+    ]
 
 
 DASHBOARDS = {

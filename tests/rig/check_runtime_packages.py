@@ -44,30 +44,40 @@ def resolved_paths(exe):
     paths = {}
     for line in out.splitlines():
         m = re.match(r"\s*(\S+) => (\S+)", line)
-        if not m:
+        if m:
+            if m.group(2) == "not":
+                sys.exit(f"{exe}: ldd cannot resolve {m.group(1)} on this machine")
+            paths[m.group(1)] = m.group(2)
             continue
-        if m.group(2) == "not":
-            sys.exit(f"{exe}: ldd cannot resolve {m.group(1)} on this machine")
-        paths[m.group(1)] = m.group(2)
+        m = re.match(r"\s*(/\S+) \(0x", line)  # the dynamic loader: listed by path only
+        if m:
+            paths[os.path.basename(m.group(1))] = m.group(1)
     return paths
 
 
-def owning_package(path):
-    """Debian package that installed `path`; tries the /usr-merged spellings too."""
-    candidates = [path, os.path.realpath(path)]
-    for p in list(candidates):
+def spellings(path):
+    """The names dpkg may know `path` by on a /usr-merged system."""
+    out = [path, os.path.realpath(path)]
+    for p in list(out):
         if p.startswith("/lib"):
-            candidates.append("/usr" + p)
+            out.append("/usr" + p)
         elif p.startswith("/usr/lib"):
-            candidates.append(p[len("/usr"):])
-    for p in candidates:
-        r = subprocess.run(["dpkg", "-S", p], capture_output=True, text=True)
-        if r.returncode == 0:
-            # "libzmq5:amd64: /usr/lib/x86_64-linux-gnu/libzmq.so.5" (diversions have other lines)
-            for line in r.stdout.splitlines():
-                if ": " in line and not line.startswith("diversion"):
-                    return line.split(": ", 1)[0].split(":", 1)[0].split(",")[0].strip()
-    return None
+            out.append(p[len("/usr"):])
+    return list(dict.fromkeys(out))
+
+
+def owning_packages(paths):
+    """path -> Debian package that installed it (absent when none did); one dpkg call for all."""
+    candidates = sorted({c for p in paths for c in spellings(p)})
+    r = subprocess.run(["dpkg", "-S"] + candidates, capture_output=True, text=True)
+    owner_of = {}
+    for line in r.stdout.splitlines():
+        # "libzmq5:amd64: /usr/lib/x86_64-linux-gnu/libzmq.so.5"; diversions have other lines.
+        if ": /" not in line or line.startswith("diversion"):
+            continue
+        packages, path = line.split(": /", 1)
+        owner_of["/" + path] = packages.split(",")[0].strip().split(":", 1)[0]
+    return {p: next((owner_of[c] for c in spellings(p) if c in owner_of), None) for p in paths}
 
 
 def main(argv):
@@ -84,26 +94,28 @@ def main(argv):
         return SKIP
     required = {}  # package -> [(exe, soname)]
     problems = []
+    links = []  # (exe, soname, path)
     for exe in executables:
         paths = resolved_paths(exe)
         for soname in needed_libraries(exe):
-            path = paths.get(soname)
-            if path is None:
+            if soname not in paths:
                 problems.append(f"{exe}: ldd does not resolve {soname}")
                 continue
-            package = owning_package(path)
-            if package is None:
-                problems.append(f"{exe}: {soname} ({path}) belongs to no Debian package; the image cannot install it")
-                continue
-            required.setdefault(package, []).append((os.path.basename(exe), soname))
+            links.append((exe, soname, paths[soname]))
+    owners = owning_packages({path for _, _, path in links})
+    for exe, soname, path in links:
+        if owners[path] is None:
+            problems.append(f"{exe}: {soname} ({path}) belongs to no Debian package; the image cannot install it")
+            continue
+        required.setdefault(owners[path], []).append((os.path.basename(exe), soname))
     for package in sorted(set(required) - BASE_PACKAGES - listed):
         users = ", ".join(sorted({f"{exe} needs {so}" for exe, so in required[package]}))
         problems.append(f"{argv[1]}: package '{package}' is missing ({users})")
     if shutil.which("apt-cache"):
-        for package in sorted(listed):
-            r = subprocess.run(["apt-cache", "show", "--no-all-versions", package], capture_output=True, text=True)
-            if r.returncode != 0 or not r.stdout.strip():
-                problems.append(f"{argv[1]}: '{package}' is not a package apt knows on this machine")
+        r = subprocess.run(["apt-cache", "show", "--no-all-versions"] + sorted(listed), capture_output=True, text=True)
+        known = set(re.findall(r"^Package: (\S+)", r.stdout, re.M))
+        for package in sorted(listed - known):
+            problems.append(f"{argv[1]}: '{package}' is not a package apt knows on this machine")
     unused = sorted(listed - set(required))
     print(f"checked {len(executables)} executables: {len(required)} packages linked directly "
           f"({', '.join(sorted(required))})")
