@@ -101,9 +101,18 @@ void PlanningService::setup(service::ServiceContext& context) {
                              [this](const transport::Received<v1::FusedMapUpdate>& r) { on_map(r.message); });
   sub.on<v1::RobotPose>(topics::pose(robot_id_), [this](const transport::Received<v1::RobotPose>& r) {
     positions_[robot_id_] = position_of(r.message);
+    if (r.header.sim_time_ns() > 0) sim_time_ns_ = r.header.sim_time_ns();
   });
   sub.on<v1::RobotPose>(std::string(topics::kTeamPose), [this](const transport::Received<v1::RobotPose>& r) {
-    if (context_->team().find_robot(r.header.robot_id())) positions_[r.header.robot_id()] = position_of(r.message);
+    const std::string& id = r.header.robot_id();
+    if (!context_->team().find_robot(id)) return;
+    positions_[id] = position_of(r.message);
+    if (id == robot_id_) return;
+    // A teammate that stops moving and goes idle has finished its route.
+    const int state = r.message.state();
+    auto [it, fresh] = peer_motion_.emplace(id, state);
+    if (!fresh && it->second == v1::MOTION_STATE_MOVING && state == v1::MOTION_STATE_IDLE) peer_finished_ = true;
+    it->second = state;
   });
   sub.on<v1::TeamSolution>(std::string(topics::kTeamPlan), [this](const transport::Received<v1::TeamSolution>& r) {
     const std::string& source = r.header.robot_id();
@@ -224,15 +233,20 @@ void PlanningService::publish_path() {
 void PlanningService::cycle() {
   if (!mission_active_ || !have_map_ || !active_) return;
   advance_route();
-  const int64_t now = core::monotonic_ns();
-  const double age_s = core::ns_to_s(now - last_plan_ns_);
+  const double age_s = since_last_plan_s();
   std::string reason;
   if (route_.empty() && last_plan_ns_ == 0) reason = "first round";
   else if (route_.empty() && age_s >= min_replan_s_) reason = "no route";
   else if (next_view_ >= route_.size() && age_s >= min_replan_s_) reason = "route finished";
   else if (age_s >= eta_t_s_) reason = "route timed out";
+  else if (peer_finished_ && age_s >= min_replan_s_) reason = "teammate finished its route";
   else if (peer_replanned_ && age_s >= min_replan_s_) reason = "teammate replanned";
   if (!reason.empty()) replan(reason);
+}
+
+double PlanningService::since_last_plan_s() const {
+  if (sim_time_ns_ > 0 && last_plan_sim_ns_ > 0) return core::ns_to_s(sim_time_ns_ - last_plan_sim_ns_);
+  return core::ns_to_s(core::monotonic_ns() - last_plan_ns_);
 }
 
 void PlanningService::replan(const std::string& reason) {
@@ -243,7 +257,9 @@ void PlanningService::replan(const std::string& reason) {
   req.round = ++round_;
   for (const auto& [source, s] : shared_) req.shared.push_back(s);
   peer_replanned_ = false;
+  peer_finished_ = false;
   last_plan_ns_ = core::monotonic_ns();
+  last_plan_sim_ns_ = sim_time_ns_;
   planning::PlanResult res;
   try {
     res = active_->plan(req);

@@ -3,7 +3,8 @@
 // and its teammates' poses, and the teammates' previous solutions; plans a round with the
 // active planner when the route times out (eta_t), when its robot finished the route, or when
 // a teammate shared a new solution; publishes the team solution (team/plan), its exploration
-// route and the executable path to the next view (to its safety). The active planner comes
+// route and the executable path to the next view (to its safety); a teammate going idle also
+// triggers a round (it finished its route). The active planner comes
 // from the config and can be switched at run time by a MissionCommand.
 
 #include <cstdint>
@@ -42,6 +43,8 @@ class PlanningService : public service::Service {
   void request_snapshot();
   void on_mission(const v1::MissionCommand& command);
   void cycle();
+  // Seconds since the last round: sim time when the driver stamps it, else wall time.
+  double since_last_plan_s() const;
   void replan(const std::string& reason);
   void advance_route();
   void publish_path();
@@ -64,6 +67,10 @@ class PlanningService : public service::Service {
   std::map<std::string, Eigen::Vector3d> positions_;  // robot id -> last known position
   std::map<std::string, planning::ReferenceSolution> shared_;  // source robot -> solution
   bool peer_replanned_ = false;
+  bool peer_finished_ = false;                        // a teammate went idle (route done)
+  std::map<std::string, int> peer_motion_;            // robot id -> last v1::MotionState
+  int64_t sim_time_ns_ = 0;                           // latest sim time from our pose
+  int64_t last_plan_sim_ns_ = 0;
 
   bool mission_active_ = true;
   uint64_t round_ = 0;

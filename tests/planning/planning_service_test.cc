@@ -72,6 +72,7 @@ class PlanningServiceTest : public ::testing::Test {
           core::bind_endpoint(team, robot, kind, SocketRole::kPublish));
     };
     station_ = bind(std::string(core::kStationId), ServiceKind::kStation);
+    peer_sim_ = bind("r2", ServiceKind::kSim);
     watch_ = std::make_unique<transport::Subscriber>(host_->transport());
     watch_->on<v1::TeamSolution>(std::string(topics::kTeamPlan),
                                  [this](const transport::Received<v1::TeamSolution>& r) { plan_ = r.message; });
@@ -89,6 +90,7 @@ class PlanningServiceTest : public ::testing::Test {
   void TearDown() override {
     watch_.reset();
     station_.reset();
+    peer_sim_.reset();
     hlmap_.reset();  // every socket of the shared context closes before the host terminates it
     host_.reset();
   }
@@ -112,7 +114,7 @@ class PlanningServiceTest : public ::testing::Test {
   std::unique_ptr<service::ServiceHost> host_;
   std::unique_ptr<highlevel::HighLevelMap> map_;
   std::unique_ptr<transport::Responder> hlmap_;
-  std::unique_ptr<transport::Publisher> station_;
+  std::unique_ptr<transport::Publisher> station_, peer_sim_;
   std::unique_ptr<transport::Subscriber> watch_;
   PlanningService* service_ = nullptr;
   int snapshot_requests_ = 0;
@@ -147,6 +149,22 @@ TEST_F(PlanningServiceTest, SwitchesPlannerAtRunTime) {
       },
       [&] { return plan_ && plan_->planner() == "no-mnss"; }));
   EXPECT_EQ(service_->active_planner(), "no-mnss");
+}
+
+TEST_F(PlanningServiceTest, ATeammateFinishingItsRouteTriggersARound) {
+  ASSERT_TRUE(until([] {}, [&] { return plan_.has_value(); }));
+  const uint64_t first = plan_->round();
+  v1::RobotPose pose;
+  pose.mutable_pose()->mutable_position_m()->set_x(20.5);
+  pose.mutable_pose()->mutable_position_m()->set_y(1.5);
+  int sent = 0;
+  ASSERT_TRUE(until(
+      [&] {
+        // Moving for a while, then idle: the teammate reached the end of its route.
+        pose.set_state(sent++ < 4 ? v1::MOTION_STATE_MOVING : v1::MOTION_STATE_IDLE);
+        peer_sim_->publish(topics::kTeamPose, pose);
+      },
+      [&] { return plan_->round() > first; }, std::chrono::milliseconds(5000)));
 }
 
 }  // namespace
