@@ -240,30 +240,7 @@ class TeamSim {
   size_t repair_bytes_ = 0;
 };
 
-// Overlapping voxel streams: robot i sees a band of the campus overlapping its neighbours',
-// in its own order, with its own (slightly different) point means and coverage.
-std::vector<std::vector<VoxelSample>> overlapping_streams(int robots, uint32_t seed) {
-  testing::CampusSpec spec;
-  spec.size_m = 18.0;
-  spec.buildings = 1;
-  spec.building_m = 7.0;
-  const auto all = testing::campus_voxels(spec);
-  std::vector<std::vector<VoxelSample>> streams(robots);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> jitter(-0.02f, 0.02f);
-  const double band = spec.size_m / robots;
-  for (int i = 0; i < robots; ++i) {
-    for (VoxelSample v : all) {
-      const double x = v.mean.x();
-      if (x < (i - 0.4) * band || x > (i + 1.4) * band) continue;
-      v.mean += Eigen::Vector3f(jitter(rng), jitter(rng), jitter(rng));
-      if ((v.key.x + v.key.y + i) % 3 == 0) v.flags |= kVoxelCovered;
-      streams[i].push_back(v);
-    }
-    std::shuffle(streams[i].begin(), streams[i].end(), rng);
-  }
-  return streams;
-}
+using testing::overlapping_streams;
 
 void run_team(TeamSim& team, const std::vector<std::vector<VoxelSample>>& streams, int late_robot, int windows) {
   const int n = static_cast<int>(streams.size());
