@@ -1,5 +1,6 @@
 // PerceptionMap::save / load: a small self-describing header around octomap's node stream.
 
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>

@@ -210,6 +210,8 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
 
 void PerceptionMap::update_observation(VoxelData& d, const Eigen::Vector3d& centre, const Eigen::Vector3d& sensor,
                                        uint32_t points) const {
+  // Without a normal the angle is undefined, so the observation cannot qualify; its points
+  // still shape the Gaussian, and later observations count once a normal exists.
   if (!d.has_normal()) return;
   const Eigen::Vector3d view = sensor - voxel_mean(d, centre);
   const double distance = view.norm();

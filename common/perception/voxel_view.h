@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "common/perception/voxel_data.h"
 #include "common/perception/voxel_octree.h"
 
 namespace hexplore::perception {
@@ -26,9 +27,9 @@ struct VoxelView {
   uint8_t flags = 0;                                         // kFlagGround | kFlagCovered | kFlagTraversable
   uint32_t low_risk_species_mask = 0;                        // bit k: R_k(v) = 0
 
-  bool ground() const { return (flags & 1) != 0; }
-  bool covered() const { return (flags & 2) != 0; }      // Q(v) = 1: CSE
-  bool traversable() const { return (flags & 4) != 0; }  // zeta(v) = 1
+  bool ground() const { return (flags & kFlagGround) != 0; }
+  bool covered() const { return (flags & kFlagCovered) != 0; }          // Q(v) = 1: CSE
+  bool traversable() const { return (flags & kFlagTraversable) != 0; }  // zeta(v) = 1
 };
 
 // The four subsets of eq. 5, and ground voxels no species can traverse (in none of them).
