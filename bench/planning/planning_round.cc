@@ -87,5 +87,25 @@ int main(int argc, char** argv) {
                   last.view_stats.facade_targets, last.view_stats.facade_views, last.view_stats.unobservable_facades,
                   last.view_stats.composite_ground, last.view_stats.ground_views, (long long)last.view_stats.rays_cast);
   }
+  if (only.empty() || only == "hexplore") {
+    // The assignment with and without the memetic local search, same generation budget and
+    // no time budget (deterministic), on the same map.
+    std::printf("\nhexplore assignment fitness (400 generations, no time budget):");
+    for (bool memetic : {false, true}) {
+      PlannerContext c = ctx;
+      c.options.ga_memetic = memetic;
+      c.options.ga_time_budget_s = 0.0;
+      auto planner = registry.create("hexplore");
+      planner->configure(c);
+      highlevel::HighLevelMap fresh(highlevel::species_levels(team));
+      fresh.apply(synthetic_scene(SyntheticSceneOptions{}));
+      PlanRequest req;
+      req.map = &fresh;
+      for (const auto& rc : team.robots) req.robots.push_back({rc.id, *team.species_index(rc.species), rc.start_position_m});
+      const PlanResult res = planner->plan(req);
+      std::printf(" %s %.1f (%.1f ms)", memetic ? "memetic" : "plain-GA", res.fitness, 1e3 * res.times.assignment_s);
+    }
+    std::printf("\n");
+  }
   return 0;
 }

@@ -53,6 +53,8 @@ struct PlannerOptions {
   int ga_max_generations = 400;
   double ga_time_budget_s = 0.05;
   uint64_t seed = 1;
+  // Local search (2-opt + relocate) on each new best of the GA; false = the paper's plain GA.
+  bool ga_memetic = true;
   int mnss_samples = 16;        // view sets sampled per cluster
   double min_view_separation_m = 1.0;  // MNSS rejects views this close to a chosen one
   // Clock of the stage timings and the GA time budget: wall time in services; the thread's

@@ -157,7 +157,7 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
     ga.max_generations = o.ga_max_generations;
     ga.time_budget_s = o.ga_time_budget_s;
     ga.seed = shared_seed(o.seed, city_ids);
-    ga.local_search = LocalSearchMode::kMemetic;
+    ga.local_search = o.ga_memetic ? LocalSearchMode::kMemetic : LocalSearchMode::kNone;
     ga.budget_clock = clock;
     if (ref) ga.seeds.push_back(reference_seed(inst.problem, city_ids, *ref, req.robots));
     const GaResult result = solve_ga(model, ga);

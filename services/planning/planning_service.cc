@@ -80,7 +80,7 @@ void PlanningService::setup(service::ServiceContext& context) {
   agreement_ = m.gauge_family("hexplore_planning_assignment_agreement_ratio",
                               "Share of clusters assigned to the same robot as in the reference solution")
                    ->add(labels_);
-  rounds_ = m.counter_family("hexplore_planning_rounds_total", "Planning rounds run")->add(labels_);
+  rounds_ = m.counter_family("hexplore_planning_rounds_total", "Planning rounds run, by planner");
   switches_ = m.counter_family("hexplore_planning_planner_switches_total", "Run-time planner switches, by new planner");
   active_gauge_ = m.gauge_family("hexplore_planning_planner_active", "1 for the active planner, 0 for the others");
 
@@ -282,7 +282,7 @@ void PlanningService::replan(const std::string& reason) {
   generations_->set(res.ga_generations);
   fitness_->set(res.fitness);
   if (res.agreement) agreement_->set(*res.agreement);
-  rounds_->increment();
+  rounds_->add({{"robot", robot_id_}, {"planner", active_name_}})->increment();
   core::LogLine(core::LogLevel::kDebug, "planning")
       << robot_id_ << ": round " << round_ << " (" << reason << ", " << active_name_ << "): " << res.views << " views, "
       << res.clusters << " clusters, " << route_.size() << " route views, " << res.times.total_s * 1e3 << " ms";
