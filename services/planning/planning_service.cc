@@ -93,8 +93,7 @@ void PlanningService::setup(service::ServiceContext& context) {
     context.connect(r.id, core::ServiceKind::kSim);
     if (r.id != robot_id_) context.connect(r.id, core::ServiceKind::kPlanning);
   }
-  if (team.find_robot(std::string(core::kStationId)) == nullptr)
-    context.connect(std::string(core::kStationId), core::ServiceKind::kStation);
+  context.connect(std::string(core::kStationId), core::ServiceKind::kStation);
 
   auto& sub = context.subscriber();
   sub.on<v1::FusedMapUpdate>(topics::hlmap(robot_id_),
@@ -231,6 +230,7 @@ void PlanningService::publish_path() {
 }
 
 void PlanningService::cycle() {
+  if (!have_map_) request_snapshot();  // hlmap may have started after us, or a reply was lost
   if (!mission_active_ || !have_map_ || !active_) return;
   advance_route();
   const double age_s = since_last_plan_s();
