@@ -2,7 +2,10 @@
 """Checks that deploy/runtime-packages.txt installs every shared library the service
 executables link directly, so the slim image of deploy/Dockerfile cannot miss one.
 
-usage: check_runtime_packages.py RUNTIME_PACKAGES_TXT EXECUTABLE...
+usage: check_runtime_packages.py [--exact] RUNTIME_PACKAGES_TXT EXECUTABLE...
+
+--exact (given when every service executable is checked): a listed package that no executable
+links is an error too, so the slim image stays slim.
 
 For each executable: its direct NEEDED libraries (readelf -d), resolved to paths by ldd, mapped
 to their Debian package by dpkg -S. Libraries those packages need in turn arrive through the
@@ -81,6 +84,8 @@ def owning_packages(paths):
 
 
 def main(argv):
+    exact = "--exact" in argv
+    argv = [a for a in argv if a != "--exact"]
     if len(argv) < 2:
         sys.exit(__doc__)
     for tool in ("readelf", "ldd", "dpkg"):
@@ -119,7 +124,9 @@ def main(argv):
     unused = sorted(listed - set(required))
     print(f"checked {len(executables)} executables: {len(required)} packages linked directly "
           f"({', '.join(sorted(required))})")
-    if unused:
+    if unused and exact:
+        problems.append(f"{argv[1]}: no service links {', '.join(unused)}; drop it from the slim image")
+    elif unused:
         print(f"note: listed but not linked directly by the checked executables: {', '.join(unused)}")
     if problems:
         print("\n".join(problems), file=sys.stderr)
