@@ -5,7 +5,7 @@ only for metrics that exist.
 usage: check_dashboards.py SOURCE_DIR
 
 - every dashboards/*.json parses, has uid, title, schemaVersion and a panel list;
-- panel ids are unique within a dashboard, every panel has a gridPos;
+- panel ids are unique within a dashboard, every panel has a gridPos inside the 24 columns;
 - every panel, target and query variable uses the data source uid that
   deploy/grafana/provisioning/datasources/*.yaml provisions;
 - every target has a non-empty expr, refIds are unique within a panel;
@@ -80,8 +80,11 @@ def check_dashboard(path, uids, sources, problems):
         pw = f"{where}: panel {p.get('id')} '{p.get('title')}'"
         if p.get("type") == "row":
             continue
-        if "gridPos" not in p:
-            problems.append(f"{pw}: no gridPos")
+        g = p.get("gridPos") or {}
+        if not all(isinstance(g.get(k), int) for k in ("x", "y", "w", "h")):
+            problems.append(f"{pw}: gridPos needs integer x, y, w, h")
+        elif g["x"] < 0 or g["w"] <= 0 or g["x"] + g["w"] > 24:
+            problems.append(f"{pw}: gridPos {g} leaves Grafana's 24 columns")
         if (p.get("datasource") or {}).get("uid") not in uids:
             problems.append(f"{pw}: data source uid {(p.get('datasource') or {}).get('uid')!r} is not provisioned {sorted(uids)}")
         targets = p.get("targets") or []
