@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -260,15 +261,15 @@ void Supervisor::begin_shutdown(const std::string& why) {
     c->expected_exit = true;
     if (c->running) ::kill(-c->pid, SIGTERM);
   }
-  kill_deadline_s_ = now_s() + options_.grace_s;
+  shutdown_started_s_ = now_s();
+  kill_deadline_s_ = shutdown_started_s_ + options_.grace_s;
 }
 
-void Supervisor::kill_remaining() {
+void Supervisor::kill_remaining(const std::string& why) {
   killed_ = true;
   for (Child* c : children_) {
     if (!c->running) continue;
-    log(c->spec.name + " (pid " + std::to_string(c->pid) + ") did not stop within " + std::to_string(options_.grace_s) +
-        " s: sending SIGKILL");
+    log(c->spec.name + " (pid " + std::to_string(c->pid) + ")" + why + ": sending SIGKILL");
     ::kill(-c->pid, SIGKILL);
   }
 }
@@ -279,8 +280,12 @@ void Supervisor::handle_signal_fd() {
     const int sig = static_cast<int>(info.ssi_signo);
     if (sig == SIGCHLD) continue;  // reaped below
     if (shutting_down_) {
-      log(std::string("received ") + ::strsignal(sig) + " again: killing what is left");
-      kill_remaining();
+      // A repeat within a second is the same request delivered twice (e.g. by `timeout` to
+      // the child and then its process group); a later one means "now".
+      if (!killed_ && now_s() - shutdown_started_s_ >= 1.0) {
+        log(std::string("received ") + ::strsignal(sig) + " again: killing what is left");
+        kill_remaining("");
+      }
     } else {
       begin_shutdown(std::string("received ") + ::strsignal(sig));
     }
@@ -309,7 +314,11 @@ int Supervisor::run() {
     }
     if (fds[0].revents & POLLIN) handle_signal_fd();
     reap();
-    if (shutting_down_ && !killed_ && now_s() >= kill_deadline_s_ && living() > 0) kill_remaining();
+    if (shutting_down_ && !killed_ && now_s() >= kill_deadline_s_ && living() > 0) {
+      char grace[32];
+      std::snprintf(grace, sizeof grace, "%g", options_.grace_s);
+      kill_remaining(std::string(" did not stop within ") + grace + " s");
+    }
     if (!shutting_down_ && living() == 0) break;
   }
   for (Stream* s : streams_) {

@@ -51,7 +51,8 @@ class Supervisor {
   void reap();
   void on_child_exit(Child& child, int status);
   void begin_shutdown(const std::string& why);
-  void kill_remaining();
+  // SIGKILL to every process still running; `why` completes the log line.
+  void kill_remaining(const std::string& why);
   void read_stream(Stream& stream, bool final);
   size_t living() const;
 
@@ -61,6 +62,7 @@ class Supervisor {
   std::vector<Stream*> streams_;
   bool shutting_down_ = false;
   bool killed_ = false;
+  double shutdown_started_s_ = 0.0;
   double kill_deadline_s_ = 0.0;
   bool station_ended_ = false;  // a process that ends the launch (station, fast-mode team) ended
   int station_code_ = 0;
