@@ -109,6 +109,16 @@ void HlmapService::setup(service::ServiceContext& context) {
 }
 
 void HlmapService::on_voxels(const v1::VoxelDelta& delta) {
+  if (std::abs(delta.resolution_m() - params_.resolution_m) > 1e-9 * params_.resolution_m &&
+      segmenter_->voxel_count() == 0 && delta.resolution_m() > 0.0 &&
+      delta.resolution_m() * 2.0 <= params_.eta_s_m) {
+    // Mapping runs at another resolution than the team default: adopt it before any voxel.
+    core::LogLine(core::LogLevel::kInfo, "hlmap")
+        << robot_id_ << ": perception resolution " << delta.resolution_m() << " m (team default " << params_.resolution_m
+        << " m)";
+    params_.resolution_m = delta.resolution_m();
+    segmenter_ = std::make_unique<highlevel::SupervoxelSegmenter>(params_, levels_);
+  }
   if (std::abs(delta.resolution_m() - params_.resolution_m) > 1e-9 * params_.resolution_m) {
     metrics_.bad_deltas->increment();
     core::LogLine(core::LogLevel::kWarn, "hlmap")
