@@ -7,6 +7,7 @@ namespace hexplore::perception {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
+constexpr uint32_t kMaxVoxelCount = 1u << 20;
 
 // Spreads the 16 bits of v to every third bit of a 48-bit word.
 uint64_t spread3(uint64_t v) {
@@ -137,6 +138,13 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
     d.count += acc.n;
     for (int a = 0; a < 3; ++a) d.sum[a] += static_cast<float>(acc.s[a]);
     for (int a = 0; a < 6; ++a) d.sum_sq[a] += static_cast<float>(acc.q[a]);
+    if (d.count > kMaxVoxelCount) {
+      // Halving every moment keeps mean and covariance while float sums keep their precision
+      // (a robot parked for hours keeps adding points to the same voxels).
+      d.count /= 2;
+      for (float& v : d.sum) v *= 0.5f;
+      for (float& v : d.sum_sq) v *= 0.5f;
+    }
     touched_.push_back({acc.key, node, acc.n, propagates, created});
   }
   stats.voxels_touched = touched_.size();
