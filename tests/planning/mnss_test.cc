@@ -1,0 +1,79 @@
+#include "common/planning/mnss.h"
+
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "common/core/team_config.h"
+#include "common/highlevel/supervoxel.h"
+#include "common/planning/mtsp_problem.h"
+#include "common/planning/synthetic_scene.h"
+
+namespace hexplore::planning {
+namespace {
+
+TaskView at(uint64_t key, double x) {
+  TaskView v;
+  v.key = key;
+  v.position = {x, 0, 0};
+  return v;
+}
+
+TEST(OrderViews, CheapestOpenPathBetweenVirtualEnds) {
+  const std::vector<TaskView> views = {at(1, 4), at(2, 1), at(3, 3), at(4, 2)};
+  const auto forward = order_views(views, {0, 0, 0}, Eigen::Vector3d(10, 0, 0));
+  std::vector<uint64_t> keys;
+  for (const auto& v : forward) keys.push_back(v.key);
+  EXPECT_EQ(keys, (std::vector<uint64_t>{2, 4, 3, 1}));
+  EXPECT_NEAR(tour_length(forward, {0, 0, 0}, Eigen::Vector3d(10, 0, 0)), 10.0, 1e-12);
+  // Start at the far end: the order reverses.
+  const auto backward = order_views(views, {5, 0, 0}, Eigen::Vector3d(0, 0, 0));
+  EXPECT_EQ(backward.front().key, 1u);
+  EXPECT_EQ(backward.back().key, 2u);
+}
+
+TEST(Mnss, CoversEveryTargetWithFewerViews) {
+  core::TeamConfig team;
+  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
+  const TeamCapabilities caps = capabilities_from(team);
+  PlannerOptions o = PlannerOptions::from(team.params);
+  SyntheticSceneOptions scene;
+  scene.width_cells = 30;
+  scene.depth_cells = 20;
+  scene.buildings = {{5, 5, 14, 13, 5}};
+  scene.rubble = {};
+  highlevel::HighLevelMap map(highlevel::species_levels(team));
+  map.apply(synthetic_scene(scene));
+  const MapContext ctx(map, o);
+  const auto views = generate_task_views(ctx, caps, o);
+  const auto clusters = cluster_views(views, o.eta_r_m);
+  ASSERT_FALSE(clusters.empty());
+  int total_before = 0, total_after = 0;
+  for (const auto& cl : clusters) {
+    if (cl.label != kPublic) continue;
+    Rng rng(3);
+    TourStats stats;
+    const Eigen::Vector3d start = cl.center + Eigen::Vector3d(-8, 0, 0);
+    const auto tour = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, caps.species[0], start, std::nullopt, o, rng,
+                                &stats);
+    std::set<uint64_t> wanted, got;
+    for (int v : cl.views) wanted.insert(views[size_t(v)].targets.begin(), views[size_t(v)].targets.end());
+    for (const auto& v : tour) {
+      got.insert(v.targets.begin(), v.targets.end());
+      const auto* g = map.find(v.ground_key);
+      ASSERT_TRUE(g && g->passable_for_level(caps.species[0].traversal_level));
+    }
+    EXPECT_EQ(got, wanted) << "cluster " << cl.id;
+    total_before += int(cl.views.size());
+    total_after += int(tour.size());
+    // Same seed, same tour.
+    Rng again(3);
+    const auto repeat = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, caps.species[0], start, std::nullopt, o, again);
+    ASSERT_EQ(repeat.size(), tour.size());
+    for (size_t i = 0; i < tour.size(); ++i) EXPECT_EQ(repeat[i].key, tour[i].key);
+  }
+  EXPECT_LT(total_after, total_before);
+}
+
+}  // namespace
+}  // namespace hexplore::planning
