@@ -221,6 +221,14 @@ void SafetyService::cycle() {
   }
   const Decision decision =
       resolver_->decide(*position_, desired_, path_speed_mps_, live_peers(), now_s());
+  if (decision.yielding_to != last_.yielding_to) {
+    // Waiting starts and ends are rare and worth seeing in the log; every decision is not.
+    if (decision.yielding_to.empty()) {
+      core::LogLine(core::LogLevel::kInfo, "safety") << robot_id_ << ": no longer waiting for " << last_.yielding_to;
+    } else {
+      core::LogLine(core::LogLevel::kInfo, "safety") << robot_id_ << ": " << decision.reason;
+    }
+  }
   last_ = decision;
   v1::MotionCommand command = to_motion_command(decision);
   if (decision.kind == DecisionKind::kFollow && look_at_) {
