@@ -15,27 +15,44 @@ double path_length(const Path& path) {
 }
 
 Path remaining_path(const Eigen::Vector3d& position, const Path& waypoints) {
+  return remaining_path(position, waypoints, 0.0, std::numeric_limits<double>::infinity(), nullptr);
+}
+
+Path remaining_path(const Eigen::Vector3d& position, const Path& waypoints, double from_s, double to_s, double* at_s) {
+  if (at_s) *at_s = 0.0;
   if (waypoints.empty()) return {position};
   if (waypoints.size() == 1) return {position, waypoints.front()};
   double best = std::numeric_limits<double>::infinity();
   size_t best_segment = 0;
   Eigen::Vector3d best_point = waypoints.front();
+  double best_s = 0.0;
+  double start_s = 0.0;
   for (size_t i = 0; i + 1 < waypoints.size(); ++i) {
     const Eigen::Vector3d& a = waypoints[i];
     const Eigen::Vector3d& b = waypoints[i + 1];
-    const Eigen::Vector2d ab = (b - a).head<2>();
-    const double len2 = ab.squaredNorm();
-    double t = len2 > 0.0 ? (position - a).head<2>().dot(ab) / len2 : 0.0;
-    t = std::clamp(t, 0.0, 1.0);
-    const Eigen::Vector3d p = a + t * (b - a);
-    const double d = distance_xy(p, position);
-    // A strictly-better test keeps the earliest segment on ties (paths that revisit a point).
-    if (d < best - 1e-9) {
-      best = d;
-      best_segment = i;
-      best_point = p;
+    const double seg = distance_xy(a, b);
+    const double end_s = start_s + seg;
+    if (end_s >= from_s && start_s <= to_s) {
+      const Eigen::Vector2d ab = (b - a).head<2>();
+      const double len2 = ab.squaredNorm();
+      double t = len2 > 0.0 ? (position - a).head<2>().dot(ab) / len2 : 0.0;
+      // Only the part of the segment inside the window counts.
+      const double t_min = seg > 0.0 ? std::clamp((from_s - start_s) / seg, 0.0, 1.0) : 0.0;
+      const double t_max = seg > 0.0 ? std::clamp((to_s - start_s) / seg, 0.0, 1.0) : 1.0;
+      t = std::clamp(t, t_min, t_max);
+      const Eigen::Vector3d p = a + t * (b - a);
+      const double d = distance_xy(p, position);
+      // A strictly-better test keeps the earliest segment on ties (paths that revisit a point).
+      if (d < best - 1e-9) {
+        best = d;
+        best_segment = i;
+        best_point = p;
+        best_s = start_s + t * seg;
+      }
     }
+    start_s = end_s;
   }
+  if (at_s) *at_s = best_s;
   Path out{position};
   if (distance_xy(best_point, position) > 1e-6) out.push_back(best_point);
   for (size_t i = best_segment + 1; i < waypoints.size(); ++i) {

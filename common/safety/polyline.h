@@ -20,6 +20,11 @@ double path_length(const Path& path);
 // the path from the closest point on it (the earliest one on ties). Empty input -> {position}.
 Path remaining_path(const Eigen::Vector3d& position, const Path& waypoints);
 
+// Same, looking for the closest point only between arc lengths `from_s` and `to_s` (a robot
+// tracking its progress must not jump to a later part of a path that passes nearby, e.g. on
+// the other side of a wall). `at_s` receives the arc length of the point chosen.
+Path remaining_path(const Eigen::Vector3d& position, const Path& waypoints, double from_s, double to_s, double* at_s);
+
 // The first `max_length_m` of the path (by horizontal length), ending on an interpolated point.
 Path truncate_to_length(const Path& path, double max_length_m);
 

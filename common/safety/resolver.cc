@@ -66,6 +66,8 @@ void ConflictResolver::reset() {
   conflicting_.clear();
   stationary_ = true;
   was_detoured_ = false;
+  progress_path_.clear();
+  progress_s_ = 0.0;
   last_ = Decision{};
 }
 
@@ -129,7 +131,23 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
     it = present ? std::next(it) : yields_.erase(it);
   }
 
-  const Path remaining = remaining_path(position, desired_path);
+  // Progress along the desired path: look for the robot near where it was last time, unless
+  // it is clearly elsewhere (a long detour, a relocalisation), then anywhere on the path.
+  if (desired_path != progress_path_) {
+    progress_path_ = desired_path;
+    progress_s_ = 0.0;
+  }
+  double at_s = 0.0;
+  const double window_m = options_.eta_p_m + speed_mps * options_.cycle_s;
+  Path remaining = remaining_path(position, desired_path, progress_s_ - 0.5, progress_s_ + window_m, &at_s);
+  double anywhere_s = 0.0;
+  Path anywhere = remaining_path(position, desired_path, 0.0, kInf, &anywhere_s);
+  const auto gap = [&](double s) { return distance_xy(position, point_at(desired_path, s)); };
+  if (gap(at_s) > gap(anywhere_s) + 0.5) {
+    remaining = std::move(anywhere);
+    at_s = anywhere_s;
+  }
+  progress_s_ = at_s;
   if (desired_path.empty() || path_length(remaining) < options_.min_move_m || !(speed_mps > 0.0)) {
     yields_.clear();
     conflicting_.clear();
@@ -149,7 +167,7 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
   // Once on a detour, keep following it while the plan and the obstacles last: re-deriving it
   // from the plan every cycle would pull the robot back towards the box and make it dither.
   const bool keep_detour = was_detoured_ && !boxes.empty() && desired_path == detour_for_;
-  const Path base = keep_detour ? remaining_path(position, detour_path_) : remaining_path(position, desired_path);
+  const Path base = keep_detour ? remaining_path(position, detour_path_) : remaining;
   DetourResult detour = detour_around(base, boxes, detour_options);
   if (detour.detoured && !keep_detour) ++counters_.detours;
   detour.detoured = detour.detoured || keep_detour;

@@ -110,6 +110,8 @@ class ConflictResolver {
   Path detour_path_;                            // the detour being followed
   Path detour_for_;                             // the desired path it was made for
   Path wanted_near_;                            // near desired path while blocked (shared)
+  Path progress_path_;                          // desired path whose progress is tracked
+  double progress_s_ = 0.0;                     // arc length reached along it
   std::string give_way_to_;                     // teammate this robot is making room for
   Eigen::Vector3d give_way_spot_ = Eigen::Vector3d::Zero();
   Decision last_;

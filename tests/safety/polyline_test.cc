@@ -22,6 +22,19 @@ TEST(Polyline, RemainingPathStartsAtTheRobotAndSkipsWhatIsBehind) {
   EXPECT_TRUE(rest[3].isApprox(V(4, 4, 0)));
 }
 
+TEST(Polyline, WindowedProgressDoesNotJumpToANearbyLaterPart) {
+  // A U-shaped path whose return leg passes 0.6 m from the outbound leg (a wall between).
+  const Path plan{V(0, 0, 0), V(10, 0, 0), V(10, 0.6, 0), V(0, 0.6, 0)};
+  const V robot(3, 0.35, 0);  // drifted towards the return leg
+  double at = -1;
+  const Path tracked = remaining_path(robot, plan, 2.5, 5.0, &at);
+  EXPECT_NEAR(at, 3.0, 1e-9);
+  EXPECT_TRUE(tracked[1].isApprox(V(3, 0, 0)));
+  EXPECT_EQ(tracked.size(), 5u);
+  const Path anywhere = remaining_path(robot, plan);
+  EXPECT_TRUE(anywhere[1].isApprox(V(3, 0.6, 0)));  // what an untracked projection would do
+}
+
 TEST(Polyline, TruncateToEtaP) {
   const Path plan{V(0, 0, 0), V(1, 0, 0), V(1, 5, 0)};
   const Path near = truncate_to_length(plan, 2.0);

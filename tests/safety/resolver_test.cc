@@ -179,6 +179,17 @@ TEST(Resolver, HigherIdStepsAsideForALowerIdItBlocksWhileBlockedByIt) {
   EXPECT_EQ(a_resolver.counters().give_ways, 0u);
 }
 
+TEST(Resolver, TracksProgressInsteadOfJumpingToANearbyLaterPartOfThePath) {
+  ConflictResolver r("a", kHalf, SafetyOptions{});
+  const Path plan{V(0, 0, 0), V(10, 0, 0), V(10, 0.6, 0), V(0, 0.6, 0)};  // U around a thin wall
+  for (double x = 0.0; x < 3.0; x += 0.1) r.decide(V(x, 0, 0), plan, 0.5, {}, x);
+  const auto d = r.decide(V(3, 0.35, 0), plan, 0.5, {}, 3.0);  // drifted towards the return leg
+  ASSERT_EQ(d.kind, DecisionKind::kFollow);
+  ASSERT_GE(d.waypoints.size(), 3u);
+  EXPECT_TRUE(d.waypoints[1].isApprox(V(3, 0, 0)));
+  EXPECT_NEAR(path_length(d.waypoints), 0.35 + 7.0 + 0.6 + 10.0, 1e-6);
+}
+
 TEST(Resolver, OptionsAreValidated) {
   SafetyOptions bad;
   bad.eta_p_m = -1;
