@@ -73,6 +73,8 @@ def panel(title, description, exprs, unit="short", kind="timeseries", stack=Fals
                                           "1": {"text": "yielding", "color": "orange", "index": 1}}}]
     elif kind == "table":
         p["options"] = {"showHeader": True}
+        # Instant queries come back as Time | labels... | Value; the labels are the answer.
+        p["transformations"] = [{"id": "organize", "options": {"excludeByName": {"Time": True, "Value": True}}}]
         for t in p["targets"]:
             t.update({"format": "table", "instant": True, "range": False})
     return p
