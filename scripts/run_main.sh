@@ -1,49 +1,24 @@
 #!/usr/bin/env bash
-# The main job: installs the Debian packages, builds, and runs the richest thing that exists.
-# The team exploration demo does not exist yet; until it does, this runs the transport
-# benchmark and a short two-process demo of the service base (two robots exchanging team
-# messages over tcp, with their /metrics scraped).
+# The main job: installs the Debian packages, builds, and runs the default heterogeneous team
+# (one tracked SLUGCAT, one wheeled MR1000; deploy/teams/default.yaml) exploring the
+# single-building scene to completion: every service of every robot is its own process on
+# loopback. The station prints progress and writes the results folder when the mission ends
+# (no task views remain, or the team file's time limit).
+#
+# Environment: HEXPLORE_TEAM (team file), HEXPLORE_RESULTS (results folder).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install_deps.sh
 ./scripts/build.sh
 BUILD_DIR=${HEXPLORE_BUILD_DIR:-build}
+TEAM=${HEXPLORE_TEAM:-deploy/teams/default.yaml}
+RESULTS=${HEXPLORE_RESULTS:-results/$(date -u +%Y%m%d-%H%M%S)}
+mkdir -p "$RESULTS"
 
-echo "=== hexplore main job: the team exploration demo is not there yet; running the transport benchmark and a two-process demo ==="
-
-echo "--- transport benchmark (two processes, tcp loopback) ---"
-"$BUILD_DIR/bench/transport/transport_bench" --count 1000000 --latency-seconds 5
-
-echo "--- two-process demo: robots slugcat1 and mr1000a (deploy/teams/default.yaml) ---"
-LOG_DIR=$(mktemp -d)
-ECHO="$BUILD_DIR/tests/service/echo_service"
-pids=()
-cleanup() {
-  for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
-  for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
-}
-trap cleanup EXIT
-for robot in slugcat1 mr1000a; do
-  "$ECHO" --config deploy/teams/default.yaml --robot "$robot" --kind hlmap --metrics-port -1 \
-    >"$LOG_DIR/$robot.log" 2>&1 &
-  pids+=($!)
-done
-port=""
-for _ in $(seq 1 100); do
-  port=$(sed -n 's/.*serving \/metrics on port \([0-9]*\).*/\1/p' "$LOG_DIR/slugcat1.log" | head -1)
-  [ -n "$port" ] && break
-  sleep 0.1
-done
-if [ -z "$port" ]; then
-  echo "demo: slugcat1 did not start:"; cat "$LOG_DIR/slugcat1.log"; exit 1
-fi
-sleep 3
-echo "demo: team/echo traffic of slugcat1 after 3 s (from http://127.0.0.1:$port/metrics):"
-curl -s "http://127.0.0.1:$port/metrics" | grep -E '^hexplore_(transport_(sent|received)_messages_total|process_uptime_seconds).*' \
-  | grep -E 'team/echo|uptime' || true
-cleanup
-trap - EXIT
-echo "demo: both services stopped on SIGTERM; logs:"
-cat "$LOG_DIR"/*.log
-rm -rf "$LOG_DIR"
-echo "=== done (team exploration demo not there yet) ==="
+echo "=== hexplore main job: team $TEAM; results in $RESULTS (service logs in $RESULTS/logs) ==="
+start=$(date +%s)
+"$BUILD_DIR/tools/launcher/hexplore_launch" --config "$TEAM" --log-dir "$RESULTS/logs" \
+  --child-args "--results $RESULTS" --exit-on-failure && status=0 || status=$?
+echo "=== main job finished in $(( $(date +%s) - start )) s wall time (exit $status); results: $RESULTS ==="
+ls "$RESULTS"
+exit $status

@@ -116,8 +116,10 @@ void PlanningService::setup(service::ServiceContext& context) {
   sub.on<v1::TeamSolution>(std::string(topics::kTeamPlan), [this](const transport::Received<v1::TeamSolution>& r) {
     const std::string& source = r.header.robot_id();
     if (source == robot_id_ || !context_->team().find_robot(source)) return;
+    // Only a candidate reference for our next round: replanning on every teammate solution
+    // makes robots replan each other in a loop and never finish a route (paper: replan on
+    // route time-out or when a robot finishes its route).
     shared_[source] = planning::reference_from_proto(r.message, source);
-    peer_replanned_ = true;
   });
   sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
                              [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
@@ -240,7 +242,6 @@ void PlanningService::cycle() {
   else if (next_view_ >= route_.size() && age_s >= min_replan_s_) reason = "route finished";
   else if (age_s >= eta_t_s_) reason = "route timed out";
   else if (peer_finished_ && age_s >= min_replan_s_) reason = "teammate finished its route";
-  else if (peer_replanned_ && age_s >= min_replan_s_) reason = "teammate replanned";
   if (!reason.empty()) replan(reason);
 }
 
@@ -256,7 +257,6 @@ void PlanningService::replan(const std::string& reason) {
   req.self = self_;
   req.round = ++round_;
   for (const auto& [source, s] : shared_) req.shared.push_back(s);
-  peer_replanned_ = false;
   peer_finished_ = false;
   last_plan_ns_ = core::monotonic_ns();
   last_plan_sim_ns_ = sim_time_ns_;
@@ -277,6 +277,8 @@ void PlanningService::replan(const std::string& reason) {
   stage_assignment_->observe(res.times.assignment_s);
   stage_mnss_->observe(res.times.mnss_s);
   stage_total_->observe(res.times.total_s);
+  last_views_ = res.views;
+  last_planning_time_s_ = res.times.total_s;
   views_->set(res.views);
   clusters_->set(res.clusters);
   generations_->set(res.ga_generations);
@@ -301,6 +303,11 @@ void PlanningService::fill_status(v1::ServiceStatus& status) {
     value->set_value(v);
   };
   add("round", double(round_));
+  // The station's mission monitor and recorder read these two (common/station/team_recorder.h).
+  if (round_ > 0) {
+    add("views_remaining", double(last_views_));
+    add("planning_time_s", last_planning_time_s_);
+  }
   add("route_views_left", double(route_.size() - std::min(route_.size(), next_view_)));
   add("map_version", double(map_version_));
 }

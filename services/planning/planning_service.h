@@ -66,7 +66,6 @@ class PlanningService : public service::Service {
   bool snapshot_pending_ = false;
   std::map<std::string, Eigen::Vector3d> positions_;  // robot id -> last known position
   std::map<std::string, planning::ReferenceSolution> shared_;  // source robot -> solution
-  bool peer_replanned_ = false;
   bool peer_finished_ = false;                        // a teammate went idle (route done)
   std::map<std::string, int> peer_motion_;            // robot id -> last v1::MotionState
   int64_t sim_time_ns_ = 0;                           // latest sim time from our pose
@@ -74,6 +73,8 @@ class PlanningService : public service::Service {
 
   bool mission_active_ = true;
   uint64_t round_ = 0;
+  size_t last_views_ = 0;             // task views of the latest round (0 = exploration done)
+  double last_planning_time_s_ = 0.0;
   int64_t last_plan_ns_ = 0;
   std::vector<planning::TaskView> route_;
   size_t next_view_ = 0;

@@ -114,7 +114,8 @@ void Supervisor::start(const std::vector<ProcessSpec>& processes) {
     int err[2] = {-1, -1};
     int exec_report[2] = {-1, -1};  // closes on a successful exec; carries errno otherwise
     int log_fd = -1;
-    if (options_.log_dir.empty()) {
+    // The station's output is the mission's progress display: it always goes to the terminal.
+    if (options_.log_dir.empty() || spec.is_station) {
       if (::pipe2(out, O_CLOEXEC) != 0 || ::pipe2(err, O_CLOEXEC) != 0)
         throw std::runtime_error("cannot start " + spec.name + ": pipe: " + std::strerror(errno));
     } else {
