@@ -8,7 +8,10 @@
 #include <string>
 #include <vector>
 
+#include <limits>
+
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace hexplore::core {
 
@@ -76,8 +79,14 @@ struct TransportConfig {
 struct AlgorithmParams {
   // Perception map.
   double map_resolution_m = 0.15;
-  double rho_th = 0.3;                   // observation-density threshold (points per 0.01 m^2 ... see perception)
-  double gamma_th_deg = 45.0;            // observation-angle threshold
+  double rho_th = 0.3;                   // observation-density threshold, points per cm^2 (see perception/map_params.h)
+  double gamma_th_deg = 45.0;            // observation-angle threshold (facade voxels)
+  // Observation-angle threshold for ground voxels. Not in the paper's table: a LiDAR mounted
+  // below 1 m sees the floor at grazing angles, and with 45 deg a floor voxel would need the
+  // sensor within one mount height of it, so ground coverage would never complete. 75 deg
+  // covers the floor within about 2 m of the robot, matching the paper's assumption that a
+  // ground supervoxel is observed once a robot reaches its centre.
+  double gamma_th_ground_deg = 75.0;
   double s_th_deg = 45.0;                // ground / facade slope threshold
   // Task views.
   double theta_l_deg = -45.0;
@@ -117,6 +126,14 @@ struct TeamConfig {
   AlgorithmParams params;
   int metrics_base_port = 0;             // 0 = no Prometheus exposer; else base + robot*10 + service
   double time_limit_s = 1800.0;          // mission ends at this sim time if views remain
+  // The area the operator asks the team to explore (world frame). Surfaces outside it are
+  // not coverage targets; robots may still drive outside it. Unbounded when not given.
+  Eigen::AlignedBox3d exploration_region = unbounded_region();
+
+  static Eigen::AlignedBox3d unbounded_region() {
+    const double inf = std::numeric_limits<double>::infinity();
+    return Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-inf), Eigen::Vector3d::Constant(inf));
+  }
 
   // Lookups; nullptr / nullopt when unknown, never throw.
   const SpeciesConfig* find_species(const std::string& name) const;

@@ -159,13 +159,14 @@ void read_transport(const Reader& r, const YAML::Node& n, TransportConfig& t) {
 
 void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   const std::string path = "params";
-  r.only_keys(n, path, {"map_resolution_m", "rho_th", "gamma_th_deg", "s_th_deg", "theta_l_deg", "theta_u_deg",
+  r.only_keys(n, path, {"map_resolution_m", "rho_th", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg",
                         "beta_i", "beta_l", "beta_zeta", "beta_varsigma", "beta_e", "beta_c", "beta_m", "beta_d",
                         "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "ga_population",
                         "ga_max_generations", "ga_time_budget_s", "planner", "seed"});
   r.read(n, path, "map_resolution_m", p.map_resolution_m);
   r.read(n, path, "rho_th", p.rho_th);
   r.read(n, path, "gamma_th_deg", p.gamma_th_deg);
+  r.read(n, path, "gamma_th_ground_deg", p.gamma_th_ground_deg);
   r.read(n, path, "s_th_deg", p.s_th_deg);
   r.read(n, path, "theta_l_deg", p.theta_l_deg);
   r.read(n, path, "theta_u_deg", p.theta_u_deg);
@@ -201,12 +202,21 @@ TeamConfig parse_team_config(const std::string& yaml_text, const std::string& or
   }
   Reader r(origin);
   if (!root.IsMap()) throw ConfigError(origin, "", "the team file must be a YAML mapping");
-  r.only_keys(root, "", {"scene", "time_limit_s", "metrics_base_port", "species", "robots", "transport", "params"});
+  r.only_keys(root, "", {"scene", "time_limit_s", "metrics_base_port", "exploration_region", "species", "robots",
+                         "transport", "params"});
   TeamConfig c;
   c.source_file = origin;
   r.read(root, "", "scene", c.scene);
   r.read(root, "", "time_limit_s", c.time_limit_s);
   r.read(root, "", "metrics_base_port", c.metrics_base_port);
+  if (const auto region = root["exploration_region"]; region.IsDefined()) {
+    r.only_keys(region, "exploration_region", {"min", "max"});
+    Eigen::Vector3d lo = c.exploration_region.min(), hi = c.exploration_region.max();
+    r.read_vec3(region, "exploration_region", "min", lo);
+    r.read_vec3(region, "exploration_region", "max", hi);
+    if ((hi.array() <= lo.array()).any()) r.fail(region, "exploration_region", "max must exceed min on every axis");
+    c.exploration_region = Eigen::AlignedBox3d(lo, hi);
+  }
   const auto species = root["species"];
   if (!species.IsDefined() || !species.IsSequence()) r.fail(species.IsDefined() ? species : root, "species", "must be a list of species");
   for (size_t i = 0; i < species.size(); ++i)

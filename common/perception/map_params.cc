@@ -17,6 +17,7 @@ void MapParams::validate() const {
           "must be in [0.01, 2] m, got " + std::to_string(resolution_m));
   require(std::isfinite(rho_th) && rho_th >= 0.0, "rho_th", "must be >= 0");
   require(gamma_th_deg > 0.0 && gamma_th_deg <= 90.0, "gamma_th_deg", "must be in (0, 90]");
+  require(gamma_th_ground_deg > 0.0 && gamma_th_ground_deg <= 90.0, "gamma_th_ground_deg", "must be in (0, 90]");
   require(s_th_deg > 0.0 && s_th_deg < 180.0, "s_th_deg", "must be in (0, 180)");
   require(std::isfinite(l_th_m) && l_th_m > 0.0, "l_th_m", "must be > 0");
   require(mean_tolerance_m >= 0.0, "mean_tolerance_m", "must be >= 0");
@@ -53,6 +54,7 @@ MapParams make_map_params(const core::AlgorithmParams& params,
   p.resolution_m = params.map_resolution_m;
   p.rho_th = params.rho_th;
   p.gamma_th_deg = params.gamma_th_deg;
+  p.gamma_th_ground_deg = params.gamma_th_ground_deg;
   p.s_th_deg = params.s_th_deg;
   p.l_th_m = own_species.observation_range_m;
   for (const core::SpeciesConfig& s : team_species) p.species.push_back(species_limits(s));

@@ -32,7 +32,8 @@ struct MapParams {
   // ~68 points in a 0.15 m voxel: a few frames from a 16-120 line LiDAR within ~10 m, but never
   // one far grazing sweep. The unit does not depend on the resolution.
   double rho_th = 0.3;
-  double gamma_th_deg = 45.0;  // observation angle threshold
+  double gamma_th_deg = 45.0;  // observation angle threshold (facade)
+  double gamma_th_ground_deg = 75.0;  // observation angle threshold (ground; see core::AlgorithmParams)
   double s_th_deg = 45.0;      // ground/facade slope threshold
   double l_th_m = 10.0;        // observation distance threshold of THIS robot's species
   // A published voxel is re-sent only when its mean moved or its normal turned more than this

@@ -229,11 +229,15 @@ void PerceptionMap::update_observation(VoxelData& d, const Eigen::Vector3d& cent
   const double cosine = std::abs(view.dot(Eigen::Vector3d(n[0], n[1], n[2]))) / distance;
   const double angle_deg = std::acos(std::clamp(cosine, 0.0, 1.0)) * kRadToDeg;
   // Only observations inside both thresholds count (paper: gamma(v), l(v) are minima among them).
-  if (angle_deg >= params_.gamma_th_deg || distance >= params_.l_th_m) return;
+  if (angle_deg >= angle_threshold_deg(n) || distance >= params_.l_th_m) return;
   d.obs_points = static_cast<uint16_t>(std::min<uint32_t>(0xFFFF, d.obs_points + points));
   d.obs_angle_cdeg = std::min<uint16_t>(d.obs_angle_cdeg, static_cast<uint16_t>(std::lround(angle_deg * 100.0)));
   d.obs_distance_cm =
       std::min<uint16_t>(d.obs_distance_cm, static_cast<uint16_t>(std::min<long>(0xFFFE, std::lround(distance * 100.0))));
+}
+
+double PerceptionMap::angle_threshold_deg(const float normal[3]) const {
+  return slope_deg(normal) < params_.s_th_deg ? params_.gamma_th_ground_deg : params_.gamma_th_deg;
 }
 
 void PerceptionMap::refresh_state(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLookup& lookup) {
@@ -245,7 +249,7 @@ void PerceptionMap::refresh_state(const octomap::OcTreeKey& key, VoxelData& d, N
   if (ground) mask = low_risk_mask(sample_terrain(key, d, lookup, centre, window_, params_), params_);
   const double density = d.obs_points * params_.density_per_point();
   const bool covered = d.has_observation() && density > params_.rho_th &&
-                       d.obs_angle_cdeg / 100.0 < params_.gamma_th_deg && d.obs_distance_cm / 100.0 < params_.l_th_m;
+                       d.obs_angle_cdeg / 100.0 < angle_threshold_deg(n) && d.obs_distance_cm / 100.0 < params_.l_th_m;
   const uint8_t flags = static_cast<uint8_t>((ground ? kFlagGround : 0) | (covered ? kFlagCovered : 0) |
                                              (mask != 0 ? kFlagTraversable : 0));
   const bool changed = (d.flags & kPublishedFlagsMask) != flags || d.low_risk_mask != mask ||

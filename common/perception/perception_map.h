@@ -111,6 +111,8 @@ class PerceptionMap {
   void update_observation(VoxelData& d, const Eigen::Vector3d& centre, const Eigen::Vector3d& sensor,
                           uint32_t points) const;
   void refresh_state(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLookup& lookup);
+  // gamma_th for a voxel with this normal: the ground threshold below s_th, else the facade one.
+  double angle_threshold_deg(const float normal[3]) const;
   bool published_state_moved(const VoxelData& d, const Eigen::Vector3d& centre) const;
 
   MapParams params_;

@@ -96,3 +96,25 @@ TEST(TeamConfig, MissingFileIsNamed) {
 
 }  // namespace
 }  // namespace hexplore::core
+
+namespace hexplore::core {
+namespace {
+
+TEST(TeamConfig, ExplorationRegionIsReadAndChecked) {
+  const std::string base = "species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}]\n";
+  EXPECT_FALSE(parse_team_config(base, "t").exploration_region.isEmpty());
+  EXPECT_TRUE(parse_team_config(base, "t").exploration_region.contains(Eigen::Vector3d(1e9, -1e9, 0)));
+  const auto c = parse_team_config(base + "exploration_region: {min: [0, 0, -1], max: [10, 20, 5]}\n", "t");
+  EXPECT_TRUE(c.exploration_region.contains(Eigen::Vector3d(5, 5, 0)));
+  EXPECT_FALSE(c.exploration_region.contains(Eigen::Vector3d(11, 5, 0)));
+  try {
+    parse_team_config(base + "exploration_region: {min: [0, 0, 0], max: [10, -1, 5]}\n", "t.yaml");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "exploration_region");
+    EXPECT_NE(e.problem().find("max must exceed min"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace hexplore::core

@@ -93,3 +93,32 @@ TEST(Observation, OnlyObservationsInsideTheThresholdsSetTheMinima) {
 
 }  // namespace
 }  // namespace hexplore::perception
+
+namespace hexplore::perception {
+namespace {
+
+// Ground uses its own angle threshold (gamma_th_ground, 75 deg by default): a robot's LiDAR
+// sees the floor near it at 60-75 deg, which must count, while far floor stays ISE.
+TEST(Observation, GroundNearTheSensorIsCoveredAtGrazingAnglesFarGroundIsNot) {
+  PerceptionMap map(testing::two_species_params());
+  std::vector<float> floor;
+  testing::add_patch(floor, {-4, -4, 0}, {8, 0, 0}, {0, 8, 0}, 0.01);
+  map.integrate(testing::scan_of(floor, {0, 0, 0.6}), {});
+  int near_checked = 0, far_checked = 0;
+  for (const VoxelView& v : map.voxels()) {
+    const double d = std::hypot(v.mean.x(), v.mean.y());
+    if (!v.ground()) continue;
+    if (d > 0.8 && d < 1.6) {  // 53-70 deg from the normal
+      ++near_checked;
+      EXPECT_TRUE(v.covered()) << "at " << d << " m";
+    } else if (d > 3.0 && d < 3.8) {  // beyond 78 deg
+      ++far_checked;
+      EXPECT_FALSE(v.covered()) << "at " << d << " m";
+    }
+  }
+  EXPECT_GT(near_checked, 50);
+  EXPECT_GT(far_checked, 50);
+}
+
+}  // namespace
+}  // namespace hexplore::perception
