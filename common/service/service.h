@@ -148,6 +148,8 @@ class ServiceHost {
   void wait();
   // True once every service loop has returned.
   bool finished() const;
+  // True once at least one service loop has returned.
+  bool any_finished() const;
   // True when a service stopped because a callback threw (logged); run_service_main exits 1.
   bool failed() const;
 
@@ -180,5 +182,11 @@ int run_service_main(int argc, char** argv, const ServiceFactory& factory);
 
 // main() of a composed process: every factory for every --robot given (repeatable), inproc transport.
 int run_composition_main(int argc, char** argv, const std::vector<ServiceFactory>& factories);
+
+// main() of a whole team in one process (fast mode): every robot factory for every --robot,
+// plus one station; inproc transport. Ends when the station ends (mission over) or any service
+// fails, stopping the rest.
+int run_team_main(int argc, char** argv, const std::vector<ServiceFactory>& robot_factories,
+                  const ServiceFactory& station);
 
 }  // namespace hexplore::service

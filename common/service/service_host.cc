@@ -138,6 +138,12 @@ void ServiceHost::start() {
   }
 }
 
+bool ServiceHost::any_finished() const {
+  for (const auto& entry : entries_)
+    if (entry->finished.load()) return true;
+  return false;
+}
+
 void ServiceHost::stop() {
   for (auto& entry : entries_) entry->context->loop_.stop();
 }

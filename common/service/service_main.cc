@@ -97,7 +97,10 @@ CommandLine parse(int argc, char** argv, bool many_robots) {
   return cl;
 }
 
-int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, bool compose) {
+// `station`, when given, adds one station service; then the process ends as soon as any of
+// its services ends (the station's end is the mission's end; any other is a failure).
+int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, bool compose,
+        const ServiceFactory* station = nullptr) {
   // Block the stop signals before any thread exists, so every thread (ZeroMQ's included) inherits the mask.
   sigset_t stop_signals;
   sigemptyset(&stop_signals);
@@ -127,6 +130,7 @@ int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, boo
     host = std::make_unique<ServiceHost>(core::load_team_config(cl.config), options);
     for (const auto& robot : cl.robots)
       for (const auto& factory : factories) host->add(factory(), robot);
+    if (station) host->add((*station)(), std::string(core::kStationId));
     host->start();
   } catch (const core::ConfigError& e) {
     std::cerr << "error: " << e.what() << "\n";
@@ -139,6 +143,10 @@ int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, boo
   // Wait for a stop signal, or for every service to end on its own.
   timespec tick{0, 100'000'000};
   while (!host->finished()) {
+    if (station && host->any_finished()) {
+      host->stop();
+      break;
+    }
     const int signal = sigtimedwait(&stop_signals, nullptr, &tick);
     if (signal == SIGINT || signal == SIGTERM) {
       core::LogLine(core::LogLevel::kInfo, "service") << "received " << (signal == SIGINT ? "SIGINT" : "SIGTERM")
@@ -161,6 +169,11 @@ int run_service_main(int argc, char** argv, const ServiceFactory& factory) {
 
 int run_composition_main(int argc, char** argv, const std::vector<ServiceFactory>& factories) {
   return run(argc, argv, factories, true);
+}
+
+int run_team_main(int argc, char** argv, const std::vector<ServiceFactory>& robot_factories,
+                  const ServiceFactory& station) {
+  return run(argc, argv, robot_factories, true, &station);
 }
 
 }  // namespace hexplore::service

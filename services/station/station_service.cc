@@ -71,7 +71,8 @@ void StationService::setup(service::ServiceContext& context) {
   eval.observable = options_.observable;
   evaluator_ = std::make_unique<CompletenessEvaluator>(context.team(), eval);
   recorder_ = std::make_unique<TeamRecorder>(context.team());
-  recorder_->record().mode = "processes";
+  // In the composed team process (fast mode) every socket is inproc.
+  recorder_->record().mode = context.team().transport.scheme == "inproc" ? "composed" : "processes";
   MissionMonitorOptions monitor;
   monitor.time_limit_s = context.team().time_limit_s;
   monitor.settle_s = options_.settle_s;

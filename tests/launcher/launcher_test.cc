@@ -200,12 +200,15 @@ TEST(Launcher, LogDirGetsOneFilePerProcess) {
   fs::remove_all("logs", ec);
 }
 
-TEST(Launcher, FastModeRunsOneComposedProcessBesideTheStation) {
-  Launch launch({"--bin-dir", FAKE_BIN_DIR, "--compose"}, {{"FAKE_EXIT", "station:5"}});
+TEST(Launcher, FastModeRunsOneComposedProcessThatHoldsTheStation) {
+  // The station is inside the composed process (inproc reaches no other process), so the
+  // composed process's exit ends the launch with its code.
+  Launch launch({"--bin-dir", FAKE_BIN_DIR, "--compose"}, {{"FAKE_EXIT", "r2/team:5"}});
   EXPECT_EQ(launch.wait_exit(), 5) << launch.output();
   EXPECT_NE(launch.output().find("started team (pid"), std::string::npos) << launch.output();
   EXPECT_EQ(launch.count("fake r2/team pid"), 1u);  // the fake names itself by its last --robot
-  EXPECT_EQ(launch.count("started\n"), 2u);
+  EXPECT_EQ(launch.count("started\n"), 1u);
+  EXPECT_EQ(launch.count("started station"), 0u);
   EXPECT_EQ(launch.count("started r1/"), 0u);
 }
 

@@ -118,7 +118,8 @@ LaunchPlan plan_launch(const core::TeamConfig& team, const LaunchRequest& reques
       plan.processes.push_back(std::move(p));
     }
   }
-  if (std::find(services.begin(), services.end(), "station") != services.end()) {
+  // In fast mode the station runs inside the composed process (inproc reaches no other process).
+  if (request.compose_executable.empty() && std::find(services.begin(), services.end(), "station") != services.end()) {
     ProcessSpec p;
     p.name = std::string(core::kStationId);
     p.robot_id = std::string(core::kStationId);
