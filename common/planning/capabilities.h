@@ -3,10 +3,12 @@
 // (a_zeta, a_varsigma), observation range and speeds, and per robot its species. Built from
 // core::TeamConfig; the no-hetero ablation flattens it to identical robots.
 
+#include <limits>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace hexplore::core {
 struct TeamConfig;
@@ -60,6 +62,13 @@ struct PlannerOptions {
   // Clock of the stage timings and the GA time budget: wall time in services; the thread's
   // CPU time in benchmarks on a shared machine.
   bool cpu_clock = false;
+  // Coverage targets (ISE supervoxels) outside this box get no task view; unbounded by default.
+  Eigen::AlignedBox3d region = unbounded();
+
+  static Eigen::AlignedBox3d unbounded() {
+    const double inf = std::numeric_limits<double>::infinity();
+    return Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-inf), Eigen::Vector3d::Constant(inf));
+  }
 
   static PlannerOptions from(const core::AlgorithmParams& params);
 };

@@ -9,9 +9,11 @@ uint64_t GroundIndex::bucket_of(int64_t x, int64_t y) const {
   return (uint64_t(x + (int64_t{1} << 31)) << 32) | uint64_t(y + (int64_t{1} << 31));
 }
 
-GroundIndex::GroundIndex(const highlevel::HighLevelMap& map, double bucket_m) : bucket_m_(bucket_m) {
+GroundIndex::GroundIndex(const highlevel::HighLevelMap& map, double bucket_m,
+                         const std::unordered_set<uint64_t>* allowed)
+    : bucket_m_(bucket_m) {
   for (const auto& [key, sv] : map.supervoxels()) {
-    if (!sv.traversable()) continue;
+    if (!sv.traversable() || (allowed && !allowed->count(key))) continue;
     buckets_[bucket_of(int64_t(std::floor(sv.center.x() / bucket_m_)), int64_t(std::floor(sv.center.y() / bucket_m_)))]
         .push_back(&sv);
   }

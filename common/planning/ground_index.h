@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Core>
@@ -14,7 +15,9 @@ namespace hexplore::planning {
 
 class GroundIndex {
  public:
-  GroundIndex(const highlevel::HighLevelMap& map, double bucket_m);
+  // `allowed` (optional) keeps only those ground keys, e.g. the ones some robot can reach.
+  GroundIndex(const highlevel::HighLevelMap& map, double bucket_m,
+              const std::unordered_set<uint64_t>* allowed = nullptr);
   // Traversable ground supervoxels whose centre lies within radius of p, in ascending key
   // order when `sorted` (else in bucket order, which depends on the hash table).
   std::vector<const highlevel::Supervoxel*> within(const Eigen::Vector3d& p, double radius, bool sorted = true) const;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "common/core/clock.h"
 #include "common/planning/clustering.h"
@@ -59,6 +60,26 @@ std::vector<Route> reference_seed(const MtspProblem& p, const std::vector<uint64
     if (best >= 0) routes[size_t(best)].push_back(int(c));
   }
   return routes;
+}
+
+// Ground vertices each species can drive to from where its robots stand (index = species).
+std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
+                                                           const std::vector<RobotState>& robots, size_t species) {
+  std::vector<std::unordered_set<uint64_t>> out(species);
+  for (const auto& r : robots) {
+    const auto start = graph.nearest(r.position, r.species);
+    if (!start || size_t(r.species) >= species) continue;
+    auto& set = out[size_t(r.species)];
+    if (set.count(*start)) continue;  // a teammate of the same species is in the same component
+    for (const auto& [key, d] : graph.distances_from(*start, r.species)) set.insert(key);
+  }
+  return out;
+}
+
+std::unordered_set<uint64_t> union_of(const std::vector<std::unordered_set<uint64_t>>& sets) {
+  std::unordered_set<uint64_t> all;
+  for (const auto& s : sets) all.insert(s.begin(), s.end());
+  return all;
 }
 
 }  // namespace
@@ -121,8 +142,10 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
   out.round = req.round;
   out.planner = name();
 
-  // Task views.
-  const MapContext ctx(*req.map, o);
+  // Task views, standing only where some robot can drive to.
+  const highlevel::TopologyGraph& graph = req.map->graph();
+  const auto reach = reachable_ground(graph, req.robots, context_.team.species.size());
+  const MapContext ctx(*req.map, o, union_of(reach), &req.ignored);
   const std::vector<TaskView> views = generate_task_views(ctx, team, o, &out.view_stats);
   out.views = int(views.size());
   const int64_t t1 = now();
@@ -136,9 +159,9 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
   out.times.clustering_s = core::ns_to_s(t2 - t1);
 
   // Assignment.
-  const highlevel::TopologyGraph& graph = req.map->graph();
   const AssignmentInstance inst = build_assignment(graph, views, clusters, team, req.robots);
   out.dropped_clusters = int(inst.dropped.size());
+  for (int c : inst.city_cluster) out.open_views += int(clusters[size_t(c)].views.size());
   std::vector<uint64_t> city_ids;
   for (int c : inst.city_cluster) city_ids.push_back(clusters[size_t(c)].id);
 
@@ -216,7 +239,8 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
       for (int v : cl.views) all.push_back(views[size_t(v)]);
       part = order_views(std::move(all), start, end);
     } else {
-      part = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, my_species, start, end, o, rng);
+      part = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, my_species, start, end, o, rng, nullptr,
+                       &reach[size_t(me.species)]);
     }
     tour.insert(tour.end(), part.begin(), part.end());
   }
@@ -235,7 +259,9 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
   PlanResult out;
   out.round = req.round;
   out.planner = name();
-  const MapContext ctx(*req.map, o);
+  const highlevel::TopologyGraph& graph = req.map->graph();
+  const auto reach = reachable_ground(graph, req.robots, context_.team.species.size());
+  const MapContext ctx(*req.map, o, union_of(reach), &req.ignored);
   const std::vector<TaskView> views = generate_task_views(ctx, team, o, &out.view_stats);
   out.views = int(views.size());
   const int64_t t1 = now();
@@ -243,7 +269,6 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
 
   // Dynamic Voronoi partition: each view goes to the nearest (graph distance) robot whose
   // species may take it; ties to the lower robot index.
-  const highlevel::TopologyGraph& graph = req.map->graph();
   const size_t R = req.robots.size();
   std::vector<std::optional<uint64_t>> vertex(R);
   for (size_t r = 0; r < R; ++r) vertex[r] = graph.nearest(req.robots[r].position, req.robots[r].species);
@@ -281,10 +306,11 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
       std::vector<Eigen::Vector3d> around;
       for (int v : owned[r]) around.push_back(views[size_t(v)].position);
       plan.route = mnss_tour(ctx, views, owned[r], around, 0.5 * o.eta_r_m, team.species[size_t(req.robots[r].species)],
-                             req.robots[r].position, std::nullopt, o, rng);
+                             req.robots[r].position, std::nullopt, o, rng, nullptr, &reach[size_t(req.robots[r].species)]);
     }
   }
   out.clusters = int(views.size()) - out.dropped_clusters;
+  out.open_views = out.clusters;
   out.times.mnss_s = core::ns_to_s(now() - t2);
   const RobotPlan& me = out.robots[size_t(req.self)];
   if (!me.route.empty())

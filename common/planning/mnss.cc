@@ -69,7 +69,7 @@ std::vector<TaskView> mnss_tour(const MapContext& ctx, const std::vector<TaskVie
                                 const std::vector<int>& view_indices, const std::vector<Eigen::Vector3d>& neighbourhood,
                                 double radius, const SpeciesCapability& species, const Eigen::Vector3d& start,
                                 const std::optional<Eigen::Vector3d>& end, const PlannerOptions& o, Rng& rng,
-                                TourStats* stats) {
+                                TourStats* stats, const std::unordered_set<uint64_t>* reachable) {
   TourStats local;
   TourStats& st = stats ? *stats : local;
   // Targets: the cluster's ISE supervoxels, with the task view that was made for each.
@@ -86,7 +86,8 @@ std::vector<TaskView> mnss_tour(const MapContext& ctx, const std::vector<TaskVie
   std::vector<const highlevel::Supervoxel*> candidates;
   std::unordered_set<uint64_t> have;
   auto add = [&](const highlevel::Supervoxel* g) {
-    if (g->traversal_requirement <= species.traversal_level && have.insert(g->key).second) candidates.push_back(g);
+    if (g->traversal_requirement > species.traversal_level || (reachable && !reachable->count(g->key))) return;
+    if (have.insert(g->key).second) candidates.push_back(g);
   };
   for (const auto& p : neighbourhood)
     for (const auto* g : ctx.ground.within(p, radius)) add(g);

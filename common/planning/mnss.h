@@ -6,6 +6,7 @@
 // cluster centre) and a virtual end (next cluster centre).
 
 #include <optional>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Core>
@@ -34,11 +35,13 @@ double tour_length(const std::vector<TaskView>& views, const Eigen::Vector3d& st
 
 // The MNSS view sequence of a set of task views (a cluster's) for a robot of `species`.
 // Candidates stand on ground within `radius` of any point of `neighbourhood` (a cluster:
-// its centre and eta_r).
+// its centre and eta_r). `reachable` (optional) holds the ground keys the robot can drive
+// to; candidates elsewhere are skipped.
 std::vector<TaskView> mnss_tour(const MapContext& ctx, const std::vector<TaskView>& views,
                                 const std::vector<int>& view_indices, const std::vector<Eigen::Vector3d>& neighbourhood,
                                 double radius, const SpeciesCapability& species, const Eigen::Vector3d& start,
                                 const std::optional<Eigen::Vector3d>& end, const PlannerOptions& o, Rng& rng,
-                                TourStats* stats = nullptr);
+                                TourStats* stats = nullptr,
+                                const std::unordered_set<uint64_t>* reachable = nullptr);
 
 }  // namespace hexplore::planning

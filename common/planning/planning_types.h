@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Core>
@@ -26,6 +27,7 @@ struct PlanRequest {
   int self = 0;                                // index of the planning robot in `robots`
   std::vector<ReferenceSolution> shared;       // teammates' (and own) previous solutions
   uint64_t round = 0;
+  std::unordered_set<uint64_t> ignored;        // ISE supervoxels given up on: no view for them
 };
 
 // One robot's part of the team solution.
@@ -62,6 +64,7 @@ struct PlanResult {
   int views = 0;
   int clusters = 0;
   int dropped_clusters = 0;       // clusters no robot can reach or serve
+  int open_views = 0;             // views in clusters some robot can serve (0 = nothing left to do)
   std::optional<double> agreement;  // share of clusters assigned as in the reference
   StageTimes times;
   ViewGenerationStats view_stats;

@@ -70,6 +70,14 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
 
   for (const auto& [key, sv] : ctx.map.supervoxels()) {
     if (!sv.facade() || sv.covered) continue;
+    if (!o.region.contains(sv.center)) {
+      ++st.outside_region;
+      continue;
+    }
+    if (ctx.is_ignored(key)) {
+      ++st.ignored;
+      continue;
+    }
     ++st.facade_targets;
     // Growing search radius: Vis <= 1 / (beta_l * distance), so once the best visible view
     // within r scores at least what any view beyond r could, it is the best within range.
@@ -89,7 +97,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     view.observation_requirement = observation_requirement((view.position - sv.center).norm(), team);
     // Composite view: ground-ISE supervoxels next to where the robot stands are seen too.
     for (const auto* g : ctx.ground.within(view.position, o.ground_cover_radius_m)) {
-      if (g->covered || covered_ground.count(g->key)) continue;
+      if (g->covered || covered_ground.count(g->key) || ctx.is_ignored(g->key) || !o.region.contains(g->center)) continue;
       view.targets.push_back(g->key);
       covered_ground.insert(g->key);
       ++st.composite_ground;
@@ -101,6 +109,18 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
   }
   for (const auto& [key, sv] : ctx.map.supervoxels()) {
     if (!sv.traversable() || sv.covered || covered_ground.count(key)) continue;
+    if (!o.region.contains(sv.center)) {
+      ++st.outside_region;
+      continue;
+    }
+    if (ctx.is_ignored(key)) {
+      ++st.ignored;
+      continue;
+    }
+    if (!ctx.is_reachable(key)) {
+      ++st.unreachable_ground;
+      continue;
+    }
     TaskView view;
     view.key = key;
     view.ground_key = key;

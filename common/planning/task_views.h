@@ -6,6 +6,8 @@
 // views standing on them. Every view is labelled public / private (labels.h).
 
 #include <cstdint>
+#include <optional>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Core>
@@ -36,16 +38,35 @@ struct ViewGenerationStats {
   int unobservable_facades = 0;
   int composite_ground = 0;
   int ground_views = 0;
+  int outside_region = 0;      // ISE supervoxels outside the exploration region (no view)
+  int ignored = 0;             // ISE supervoxels given up on (no view)
+  int unreachable_ground = 0;  // ground ISE supervoxels nobody can stand on (no view)
   int64_t rays_cast = 0;
 };
 
-// The map-derived context shared by the planning stages of one round.
+// The map-derived context shared by the planning stages of one round. `reachable` (when
+// set) limits view positions to ground some robot of the team can drive to, so no view is
+// made where nobody can stand (roofs, upper floors without stairs, closed-off pockets);
+// `ignored` are ISE supervoxels the team gave up on (observed from their view, still not
+// covered); `region` bounds the coverage targets (TeamConfig::exploration_region).
 struct MapContext {
   const highlevel::HighLevelMap& map;
+  std::optional<std::unordered_set<uint64_t>> reachable;
   OcclusionGrid occlusion;
   GroundIndex ground;
-  MapContext(const highlevel::HighLevelMap& m, const PlannerOptions& o)
-      : map(m), occlusion(m, o.eta_s_m), ground(m, std::max(2.0, o.eta_r_m)) {}
+  const std::unordered_set<uint64_t>* ignored = nullptr;
+  MapContext(const highlevel::HighLevelMap& m, const PlannerOptions& o,
+             std::optional<std::unordered_set<uint64_t>> reachable_ground = std::nullopt,
+             const std::unordered_set<uint64_t>* ignored_targets = nullptr)
+      : map(m),
+        reachable(std::move(reachable_ground)),
+        occlusion(m, o.eta_s_m),
+        ground(m, std::max(2.0, o.eta_r_m), reachable ? &*reachable : nullptr),
+        ignored(ignored_targets) {}
+  MapContext(const MapContext&) = delete;
+  MapContext& operator=(const MapContext&) = delete;
+  bool is_ignored(uint64_t key) const { return ignored && ignored->count(key); }
+  bool is_reachable(uint64_t ground_key) const { return !reachable || reachable->count(ground_key); }
 };
 
 // Best visible view of one facade target from the given candidates; false when none sees it.

@@ -45,9 +45,13 @@ void PlanningService::setup(service::ServiceContext& context) {
   speed_mps_ = species->speed_mps;
   capabilities_ = planning::capabilities_from(team);
   options_ = planning::PlannerOptions::from(team.params);
+  options_.region = team.exploration_region;
   eta_t_s_ = team.params.eta_t_s;
   map_ = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team));
-  for (const auto& r : team.robots) positions_[r.id] = r.start_position_m;
+  for (const auto& r : team.robots) {
+    positions_[r.id] = r.start_position_m;
+    heard_ns_[r.id] = core::monotonic_ns();  // a teammate gets peer_timeout_s to show up
+  }
 
   const auto& args = context.arguments();
   if (auto it = args.find("wait-for-start"); it != args.end()) {
@@ -58,6 +62,10 @@ void PlanningService::setup(service::ServiceContext& context) {
   const double cycle_ms = parse_positive(args, "cycle-ms", 200.0);
   reach_m_ = parse_positive(args, "reach-m", 1.0);
   min_replan_s_ = parse_positive(args, "min-replan-s", 1.0);
+  peer_timeout_s_ = parse_positive(args, "peer-timeout-s", 5.0);
+  give_up_visits_ = std::max(1, int(parse_positive(args, "give-up-visits", 1.0)));
+  blocked_s_ = parse_positive(args, "blocked-s", 2.0);
+  stuck_s_ = parse_positive(args, "stuck-s", 8.0);
 
   auto& m = context.metrics();
   labels_ = {{"robot", robot_id_}};
@@ -101,11 +109,13 @@ void PlanningService::setup(service::ServiceContext& context) {
   sub.on<v1::RobotPose>(topics::pose(robot_id_), [this](const transport::Received<v1::RobotPose>& r) {
     positions_[robot_id_] = position_of(r.message);
     if (r.header.sim_time_ns() > 0) sim_time_ns_ = r.header.sim_time_ns();
+    own_motion_ = r.message.state();
   });
   sub.on<v1::RobotPose>(std::string(topics::kTeamPose), [this](const transport::Received<v1::RobotPose>& r) {
     const std::string& id = r.header.robot_id();
     if (!context_->team().find_robot(id)) return;
     positions_[id] = position_of(r.message);
+    heard_ns_[id] = core::monotonic_ns();
     if (id == robot_id_) return;
     // A teammate that stops moving and goes idle has finished its route.
     const int state = r.message.state();
@@ -120,6 +130,7 @@ void PlanningService::setup(service::ServiceContext& context) {
     // makes robots replan each other in a loop and never finish a route (paper: replan on
     // route time-out or when a robot finishes its route).
     shared_[source] = planning::reference_from_proto(r.message, source);
+    for (uint64_t key : r.message.given_up_supervoxels()) ignored_.insert(key);
   });
   sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
                              [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
@@ -205,11 +216,23 @@ void PlanningService::on_mission(const v1::MissionCommand& command) {
   }
 }
 
-std::vector<planning::RobotState> PlanningService::team_states() const {
+std::vector<planning::RobotState> PlanningService::team_states(int& self) const {
   std::vector<planning::RobotState> out;
   const auto& team = context_->team();
-  for (const auto& r : team.robots) out.push_back({r.id, team.species_index(r.species).value_or(0), positions_.at(r.id)});
+  const int64_t now = core::monotonic_ns();
+  self = 0;
+  for (const auto& r : team.robots) {
+    const bool me = r.id == robot_id_;
+    if (!me && core::ns_to_s(now - heard_ns_.at(r.id)) > peer_timeout_s_) continue;  // gone silent: not in the team
+    if (me) self = int(out.size());
+    out.push_back({r.id, team.species_index(r.species).value_or(0), positions_.at(r.id)});
+  }
   return out;
+}
+
+void PlanningService::count_attempt(const planning::TaskView& view) {
+  for (uint64_t t : view.targets)
+    if (++attempts_[t] >= give_up_visits_) ignored_.insert(t);
 }
 
 void PlanningService::advance_route() {
@@ -217,24 +240,60 @@ void PlanningService::advance_route() {
   const Eigen::Vector3d me = positions_.at(robot_id_);
   bool moved = false;
   while (next_view_ < route_.size() && (route_[next_view_].position - me).head<2>().norm() <= reach_m_) {
+    count_attempt(route_[next_view_]);
     ++next_view_;
     moved = true;
   }
   if (moved && next_view_ < route_.size()) publish_path();
 }
 
-void PlanningService::publish_path() {
+bool PlanningService::publish_path() {
   const auto& team = context_->team();
   const int species = team.species_index(team.robots[size_t(self_)].species).value_or(0);
-  const planning::ExecutablePlan path =
-      planning::executable_path(map_->graph(), positions_.at(robot_id_), species, route_[next_view_]);
-  if (path.valid) context_->publisher().publish(topics::path(robot_id_), planning::path_to_proto(round_, path, speed_mps_));
+  for (; next_view_ < route_.size(); ++next_view_) {
+    const planning::ExecutablePlan path =
+        planning::executable_path(map_->graph(), positions_.at(robot_id_), species, route_[next_view_]);
+    if (path.valid) {
+      context_->publisher().publish(topics::path(robot_id_), planning::path_to_proto(round_, path, speed_mps_));
+      return true;
+    }
+    count_attempt(route_[next_view_]);  // no way there from here
+  }
+  return false;
+}
+
+int64_t PlanningService::now_ns() const { return sim_time_ns_ > 0 ? sim_time_ns_ : core::monotonic_ns(); }
+
+void PlanningService::check_progress() {
+  const int64_t now = now_ns();
+  const Eigen::Vector3d me = positions_.at(robot_id_);
+  if (next_view_ >= route_.size() || progress_ns_ < 0 || (me - progress_pos_).head<2>().norm() > 0.5) {
+    progress_pos_ = me;
+    progress_ns_ = now;
+  }
+  if (own_motion_ != v1::MOTION_STATE_BLOCKED) blocked_since_ns_ = -1;
+  else if (blocked_since_ns_ < 0) blocked_since_ns_ = now;
+  if (next_view_ >= route_.size()) return;
+  const bool blocked = blocked_since_ns_ >= 0 && core::ns_to_s(now - blocked_since_ns_) >= blocked_s_;
+  const bool stuck = core::ns_to_s(now - progress_ns_) >= stuck_s_;
+  if (!blocked && !stuck) return;
+  const Eigen::Vector3d& goal = route_[next_view_].position;
+  core::LogLine(core::LogLevel::kInfo, "planning")
+      << robot_id_ << ": " << (blocked ? "blocked" : "no progress") << " at (" << me.x() << ", " << me.y()
+      << "), skipping the view at (" << goal.x() << ", " << goal.y() << ")";
+  count_attempt(route_[next_view_]);
+  ++next_view_;
+  blocked_since_ns_ = -1;
+  progress_pos_ = me;
+  progress_ns_ = now;
+  if (next_view_ < route_.size()) publish_path();
 }
 
 void PlanningService::cycle() {
   if (!have_map_) request_snapshot();  // hlmap may have started after us, or a reply was lost
   if (!mission_active_ || !have_map_ || !active_) return;
   advance_route();
+  check_progress();
   const double age_s = since_last_plan_s();
   std::string reason;
   if (route_.empty() && last_plan_ns_ == 0) reason = "first round";
@@ -253,9 +312,9 @@ double PlanningService::since_last_plan_s() const {
 void PlanningService::replan(const std::string& reason) {
   planning::PlanRequest req;
   req.map = map_.get();
-  req.robots = team_states();
-  req.self = self_;
+  req.robots = team_states(req.self);
   req.round = ++round_;
+  req.ignored = ignored_;
   for (const auto& [source, s] : shared_) req.shared.push_back(s);
   peer_finished_ = false;
   last_plan_ns_ = core::monotonic_ns();
@@ -269,15 +328,16 @@ void PlanningService::replan(const std::string& reason) {
   }
   // Our own solution is a reference candidate next round, like the teammates'.
   shared_[robot_id_] = res.as_reference(robot_id_);
-  route_ = res.robots[size_t(self_)].route;
+  route_ = res.robots[size_t(req.self)].route;
   next_view_ = 0;
+  progress_ns_ = -1;  // a new route: progress is measured from here
 
   stage_views_->observe(res.times.views_s);
   stage_clustering_->observe(res.times.clustering_s);
   stage_assignment_->observe(res.times.assignment_s);
   stage_mnss_->observe(res.times.mnss_s);
   stage_total_->observe(res.times.total_s);
-  last_views_ = res.views;
+  last_views_ = size_t(res.open_views);
   last_planning_time_s_ = res.times.total_s;
   views_->set(res.views);
   clusters_->set(res.clusters);
@@ -287,12 +347,26 @@ void PlanningService::replan(const std::string& reason) {
   rounds_->add({{"robot", robot_id_}, {"planner", active_name_}})->increment();
   core::LogLine(core::LogLevel::kDebug, "planning")
       << robot_id_ << ": round " << round_ << " (" << reason << ", " << active_name_ << "): " << res.views << " views, "
-      << res.clusters << " clusters, " << route_.size() << " route views, " << res.times.total_s * 1e3 << " ms";
+      << res.clusters << " clusters (" << res.dropped_clusters << " dropped), " << res.open_views << " open, "
+      << route_.size() << " route views, " << req.robots.size() << " live, " << ignored_.size() << " given up, "
+      << res.view_stats.outside_region << " outside, " << res.view_stats.unreachable_ground << " unreachable ground, "
+      << res.times.total_s * 1e3 << " ms";
+  if (!route_.empty()) {
+    const Eigen::Vector3d& me = positions_.at(robot_id_);
+    const Eigen::Vector3d& first = route_.front().position;
+    core::LogLine(core::LogLevel::kDebug, "planning")
+        << robot_id_ << ": at (" << me.x() << ", " << me.y() << ", " << me.z() << "), first view (" << first.x()
+        << ", " << first.y() << ", " << first.z() << ")";
+  }
 
   auto& pub = context_->publisher();
-  pub.publish(std::string(topics::kTeamPlan), planning::to_proto(res));
+  v1::TeamSolution solution = planning::to_proto(res);
+  std::vector<uint64_t> given_up(ignored_.begin(), ignored_.end());
+  std::sort(given_up.begin(), given_up.end());
+  for (uint64_t key : given_up) solution.add_given_up_supervoxels(key);
+  pub.publish(std::string(topics::kTeamPlan), solution);
   pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route_));
-  if (res.path.valid) pub.publish(topics::path(robot_id_), planning::path_to_proto(round_, res.path, speed_mps_));
+  if (!route_.empty()) publish_path();  // the first route view with a path (res.path when valid)
 }
 
 void PlanningService::fill_status(v1::ServiceStatus& status) {

@@ -6,12 +6,21 @@
 // route and the executable path to the next view (to its safety); a teammate going idle also
 // triggers a round (it finished its route). The active planner comes
 // from the config and can be switched at run time by a MissionCommand.
+// Robustness: teammates not heard from for --peer-timeout-s leave the team of the next round
+// (their clusters go to the others); the ISE supervoxels of a view this robot reached
+// --give-up-visits times (or could not find a path to) and that are still uncovered are given
+// up on (no view for them any more), so views that can never be satisfied do not stay forever;
+// the given-up set travels with the team solution, so every planner agrees on what is left.
+// A robot blocked by terrain (--blocked-s of sim time) or making no progress (--stuck-s) skips
+// its current view, which counts as an attempt too.
 
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 
 #include <Eigen/Core>
 
@@ -30,7 +39,9 @@ class PlanningService : public service::Service {
   core::ServiceKind kind() const override { return core::ServiceKind::kPlanning; }
   // Options (after --config/--robot): --wait-for-start true|false (default false),
   // --cycle-ms N (trigger check period, default 200), --reach-m X (a view counts as reached
-  // within this distance, default 1.0), --min-replan-s X (default 1.0).
+  // within this distance, default 1.0), --min-replan-s X (default 1.0), --peer-timeout-s X
+  // (default 5.0, wall time), --give-up-visits N (default 1), --blocked-s X (default 2.0),
+  // --stuck-s X (default 8.0).
   void setup(service::ServiceContext& context) override;
   void fill_status(v1::ServiceStatus& status) override;
 
@@ -47,8 +58,15 @@ class PlanningService : public service::Service {
   double since_last_plan_s() const;
   void replan(const std::string& reason);
   void advance_route();
-  void publish_path();
-  std::vector<planning::RobotState> team_states() const;
+  // Skips the current view when the robot is blocked or makes no progress towards it.
+  void check_progress();
+  int64_t now_ns() const;  // sim time when the driver stamps it, else monotonic time
+  // Publishes the path to the next reachable route view; skips (and counts an attempt for)
+  // views without a path. False when no view of the route is left.
+  bool publish_path();
+  void count_attempt(const planning::TaskView& view);
+  // The live team (self, and teammates heard from recently); sets `self` to our index in it.
+  std::vector<planning::RobotState> team_states(int& self) const;
 
   service::ServiceContext* context_ = nullptr;
   std::string robot_id_;
@@ -68,6 +86,13 @@ class PlanningService : public service::Service {
   std::map<std::string, planning::ReferenceSolution> shared_;  // source robot -> solution
   bool peer_finished_ = false;                        // a teammate went idle (route done)
   std::map<std::string, int> peer_motion_;            // robot id -> last v1::MotionState
+  std::map<std::string, int64_t> heard_ns_;           // robot id -> monotonic time of its last pose
+  std::unordered_map<uint64_t, int> attempts_;        // ISE supervoxel -> visits of a view for it
+  std::unordered_set<uint64_t> ignored_;              // given up on (see the class comment)
+  int own_motion_ = 0;                                // our last v1::MotionState
+  int64_t blocked_since_ns_ = -1;                     // now_ns() when we became blocked, -1 if not
+  Eigen::Vector3d progress_pos_ = Eigen::Vector3d::Zero();  // where we last made progress
+  int64_t progress_ns_ = -1;                          // now_ns() of that progress
   int64_t sim_time_ns_ = 0;                           // latest sim time from our pose
   int64_t last_plan_sim_ns_ = 0;
 
@@ -82,6 +107,10 @@ class PlanningService : public service::Service {
   double reach_m_ = 1.0;
   double min_replan_s_ = 1.0;
   double speed_mps_ = 0.5;
+  double peer_timeout_s_ = 5.0;
+  int give_up_visits_ = 1;
+  double blocked_s_ = 2.0;
+  double stuck_s_ = 8.0;
 
   metrics::Histogram* stage_views_ = nullptr;
   metrics::Histogram* stage_clustering_ = nullptr;

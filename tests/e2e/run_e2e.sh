@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# One end-to-end case: a SLUGCAT and an MR1000 explore the generated yard-and-room scene
+# (make_scene.sh) through the launcher (every service its own process), and the results
+# folder's summary.json must show the stated completeness and no collision.
+#   run_e2e.sh CASE LAUNCHER STATION WORKDIR BASE_PORT
+# CASE: explore (plain run), switch (planner switched to no-mnss mid-run via the station's
+# --send), kill (every service of mr1000a killed mid-run; slugcat1 must finish the work).
+set -euo pipefail
+case=$1 launch=$2 station=$3 work=$4 port=$5
+here=$(cd "$(dirname "$0")" && pwd)
+min_observable=${E2E_MIN_OBSERVABLE:-0.70}
+rm -rf "$work"
+mkdir -p "$work"
+bash "$here/make_scene.sh" "$work/yard_room.obj"
+cat > "$work/team.yaml" <<YAML
+scene: yard_room.obj
+time_limit_s: 400
+exploration_region:
+  min: [-3.0, -3.0, -0.5]
+  max: [13.0, 9.0, 3.0]
+metrics_base_port: 0
+species:
+  - builtin: SLUGCAT
+  - builtin: MR1000
+robots:
+  - id: slugcat1
+    species: SLUGCAT
+    start: [0.0, 0.0, 0.0]
+    yaw_deg: 90
+  - id: mr1000a
+    species: MR1000
+    start: [2.0, 0.0, 0.0]
+    yaw_deg: 90
+transport:
+  scheme: tcp
+  base_port: $port
+params:
+  seed: 1
+YAML
+
+fail() {
+  echo "E2E FAIL ($case): $*" >&2
+  echo "--- launch.log (tail)" >&2
+  tail -n 30 "$work/launch.log" >&2 || true
+  exit 1
+}
+
+"$launch" --config "$work/team.yaml" --log-dir "$work/logs" \
+  --child-args "--results $work/results --log-level debug --real-time-factor ${E2E_RTF:-2}" > "$work/launch.log" 2>&1 &
+launcher=$!
+cleanup() { kill "$launcher" 2>/dev/null || true; }
+trap cleanup EXIT
+
+# Sim time of the station's latest progress line (0 before the first one).
+sim_time() { { grep -o 't= *[0-9.]*s' "$work/launch.log" || true; } | tail -n 1 | tr -dc '0-9.' ; }
+wait_sim_time() {
+  local target=$1
+  for _ in $(seq 1 600); do
+    kill -0 "$launcher" 2>/dev/null || return 0
+    local t
+    t=$(sim_time)
+    if [ -n "$t" ] && awk -v t="$t" -v g="$target" 'BEGIN { exit !(t >= g) }'; then return 0; fi
+    sleep 0.5
+  done
+}
+
+case $case in
+  explore) ;;
+  switch)
+    wait_sim_time 20
+    "$station" --config "$work/team.yaml" --send planner=no-mnss || fail "could not send the planner switch"
+    ;;
+  kill)
+    wait_sim_time 20
+    pids=$(sed -n 's/^\[launch\] started mr1000a\/[a-z]* (pid \([0-9]*\)).*/\1/p' "$work/launch.log")
+    [ -n "$pids" ] || fail "no mr1000a process found in the launch log"
+    for pid in $pids; do kill -KILL "$pid" 2>/dev/null || true; done
+    echo "killed mr1000a's services: $pids"
+    ;;
+  *) fail "unknown case" ;;
+esac
+
+wait "$launcher" || true
+trap - EXIT
+summary=$work/results/summary.json
+[ -f "$summary" ] || fail "no $summary"
+cat "$summary"
+value() { sed -n "s/.*\"$1\": *\([^,}]*\).*/\1/p" "$summary" | head -n 1 | tr -d '"'; }
+end=$(value end_reason)
+obs=$(value final_observable_completeness)
+echo "end: $end, observable completeness: $obs (required >= $min_observable)"
+[ "$end" = "no task views remain" ] || fail "mission ended by '$end', not by exhausted task views"
+awk -v c="$obs" -v m="$min_observable" 'BEGIN { exit !(c >= m) }' || fail "observable completeness $obs < $min_observable"
+if grep -o '"collisions": *[0-9]*' "$summary" | grep -qv '"collisions": *0$'; then fail "a robot collided"; fi
+case $case in
+  switch)
+    grep -q "planner switched from hexplore to no-mnss" "$work/logs/slugcat1-planning.log" ||
+      fail "slugcat1's planner did not switch"
+    grep -q "planner switched from hexplore to no-mnss" "$work/logs/mr1000a-planning.log" ||
+      fail "mr1000a's planner did not switch"
+    ;;
+  kill)
+    # The survivor planned for itself alone after the loss, and went on to cover more.
+    grep -q "1 live" "$work/logs/slugcat1-planning.log" || fail "slugcat1 never planned without mr1000a"
+    ;;
+esac
+echo "E2E PASS ($case)"
