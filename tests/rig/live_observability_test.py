@@ -69,6 +69,7 @@ def team_yaml(base, metrics):
                      for rid, species, start in ROBOTS)
     return (f"# written by tests/rig/live_observability_test.py: two robots of the multi-building team\n"
             f"scene: multi-building\ntime_limit_s: 600\nmetrics_base_port: {metrics}\n"
+            f"exploration_region:\n  min: [-1.0, -1.0, -0.5]\n  max: [40.4, 40.4, 14.0]\n"
             f"species:\n  - builtin: SLUGCAT\n  - builtin: MR1000\nrobots:\n{robots}"
             f"transport:\n  scheme: tcp\n  host_template: 127.0.0.1\n  base_port: {base}\n"
             f"  ports_per_robot: {PORTS_PER_ROBOT}\n  linger_ms: 100\nparams:\n  seed: 1\n")
