@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "common/planning/robot_vertex.h"
+
 namespace hexplore::planning {
 
 AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const std::vector<TaskView>& views,
@@ -18,7 +20,7 @@ AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const
   out.robot_vertex.resize(size_t(R), 0);
   std::vector<char> robot_on_graph(size_t(R), 0);
   for (int r = 0; r < R; ++r)
-    if (auto v = graph.nearest(robots[size_t(r)].position, robots[size_t(r)].species)) {
+    if (auto v = robot_vertex(graph, robots[size_t(r)].position, robots[size_t(r)].species)) {
       out.robot_vertex[size_t(r)] = *v;
       robot_on_graph[size_t(r)] = 1;
     }

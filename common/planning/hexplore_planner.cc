@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
@@ -13,6 +16,7 @@
 #include "common/planning/labels.h"
 #include "common/planning/mnss.h"
 #include "common/planning/rng.h"
+#include "common/planning/robot_vertex.h"
 
 namespace hexplore::planning {
 namespace {
@@ -62,16 +66,20 @@ std::vector<Route> reference_seed(const MtspProblem& p, const std::vector<uint64
   return routes;
 }
 
-// Ground vertices each species can drive to from where its robots stand (index = species).
+// Ground vertices each species can drive to from where its robots stand (index = species),
+// limited to the exploration region: robots stand inside the site (outside it the ground may
+// end under them).
 std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
-                                                           const std::vector<RobotState>& robots, size_t species) {
+                                                           const std::vector<RobotState>& robots, size_t species,
+                                                           const Eigen::AlignedBox3d& region) {
   std::vector<std::unordered_set<uint64_t>> out(species);
   for (const auto& r : robots) {
-    const auto start = graph.nearest(r.position, r.species);
+    const auto start = robot_vertex(graph, r.position, r.species);
     if (!start || size_t(r.species) >= species) continue;
     auto& set = out[size_t(r.species)];
     if (set.count(*start)) continue;  // a teammate of the same species is in the same component
-    for (const auto& [key, d] : graph.distances_from(*start, r.species)) set.insert(key);
+    for (const auto& [key, d] : graph.distances_from(*start, r.species))
+      if (const auto p = graph.position(key); p && region.contains(*p)) set.insert(key);
   }
   return out;
 }
@@ -109,16 +117,68 @@ void HexplorePlanner::configure(const PlannerContext& context) {
   configured_ = true;
 }
 
+namespace {
+
+// Shortest path a -> b for a species that never enters `avoid` (Dijkstra with a heap).
+std::vector<uint64_t> path_avoiding(const highlevel::TopologyGraph& graph, uint64_t a, uint64_t b, int species,
+                                    const std::unordered_set<uint64_t>& avoid) {
+  using Item = std::pair<double, uint64_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  std::unordered_map<uint64_t, double> dist{{a, 0.0}};
+  std::unordered_map<uint64_t, uint64_t> parent;
+  open.push({0.0, a});
+  while (!open.empty()) {
+    const auto [d, k] = open.top();
+    open.pop();
+    if (d > dist[k]) continue;
+    if (k == b) break;
+    for (const auto& [n, w] : graph.neighbours(k)) {
+      if (avoid.count(n) || !graph.passable(n, species)) continue;
+      const auto it = dist.find(n);
+      if (it != dist.end() && it->second <= d + w) continue;
+      dist[n] = d + w;
+      parent[n] = k;
+      open.push({d + w, n});
+    }
+  }
+  if (!dist.count(b)) return {};
+  std::vector<uint64_t> keys{b};
+  while (keys.back() != a) keys.push_back(parent.at(keys.back()));
+  std::reverse(keys.begin(), keys.end());
+  return keys;
+}
+
+}  // namespace
+
 ExecutablePlan executable_path(const highlevel::TopologyGraph& graph, const Eigen::Vector3d& from, int species,
-                               const TaskView& goal) {
+                               const TaskView& goal, const std::unordered_set<uint64_t>* avoid) {
   ExecutablePlan out;
   out.goal = goal;
-  const auto start = graph.nearest(from, species);
+  auto start = robot_vertex(graph, from, species);
   if (!start) return out;
-  const auto keys = graph.path(*start, goal.ground_key, species);
+  const bool avoiding = avoid && !avoid->empty();
+  if (avoiding && avoid->count(goal.ground_key)) return out;
+  if (avoiding && avoid->count(*start)) {
+    // Standing next to a vertex we cannot pass: leave from the nearest neighbour we can.
+    std::optional<uint64_t> best;
+    double bd = std::numeric_limits<double>::infinity();
+    for (const auto& [n, w] : graph.neighbours(*start)) {
+      const auto p = graph.position(n);
+      if (avoid->count(n) || !graph.passable(n, species) || !p) continue;
+      const double d = (*p - from).norm();
+      if (d < bd) bd = d, best = n;
+    }
+    if (!best) return out;
+    start = best;
+  }
+  const auto keys = avoiding ? path_avoiding(graph, *start, goal.ground_key, species, *avoid)
+                             : graph.path(*start, goal.ground_key, species);
   if (keys.empty()) return out;
   for (uint64_t k : keys)
-    if (auto p = graph.position(k)) out.waypoints.push_back(*p);
+    if (auto p = graph.position(k)) {
+      out.waypoints.push_back(*p);
+      out.keys.push_back(k);
+    }
   out.valid = true;
   return out;
 }
@@ -144,7 +204,7 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
 
   // Task views, standing only where some robot can drive to.
   const highlevel::TopologyGraph& graph = req.map->graph();
-  const auto reach = reachable_ground(graph, req.robots, context_.team.species.size());
+  const auto reach = reachable_ground(graph, req.robots, context_.team.species.size(), o.region);
   const MapContext ctx(*req.map, o, union_of(reach), &req.ignored);
   const std::vector<TaskView> views = generate_task_views(ctx, team, o, &out.view_stats);
   out.views = int(views.size());
@@ -260,7 +320,7 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
   out.round = req.round;
   out.planner = name();
   const highlevel::TopologyGraph& graph = req.map->graph();
-  const auto reach = reachable_ground(graph, req.robots, context_.team.species.size());
+  const auto reach = reachable_ground(graph, req.robots, context_.team.species.size(), o.region);
   const MapContext ctx(*req.map, o, union_of(reach), &req.ignored);
   const std::vector<TaskView> views = generate_task_views(ctx, team, o, &out.view_stats);
   out.views = int(views.size());
@@ -271,7 +331,7 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
   // species may take it; ties to the lower robot index.
   const size_t R = req.robots.size();
   std::vector<std::optional<uint64_t>> vertex(R);
-  for (size_t r = 0; r < R; ++r) vertex[r] = graph.nearest(req.robots[r].position, req.robots[r].species);
+  for (size_t r = 0; r < R; ++r) vertex[r] = robot_vertex(graph, req.robots[r].position, req.robots[r].species);
   std::vector<std::vector<int>> owned(R);
   for (size_t v = 0; v < views.size(); ++v) {
     int best = -1;

@@ -3,6 +3,7 @@
 // clustering -> HMDMTSP assignment (GA) -> MNSS tours -> executable path.
 
 #include <string>
+#include <unordered_set>
 
 #include "common/planning/planner.h"
 
@@ -31,7 +32,9 @@ class HexplorePlanner : public Planner {
 };
 
 // The executable path from `from` to the goal view along the topology graph for a species.
+// `avoid` (optional): vertices the robot found it cannot pass (blocked there); the path goes
+// around them, or is invalid when it cannot.
 ExecutablePlan executable_path(const highlevel::TopologyGraph& graph, const Eigen::Vector3d& from, int species,
-                               const TaskView& goal);
+                               const TaskView& goal, const std::unordered_set<uint64_t>* avoid = nullptr);
 
 }  // namespace hexplore::planning

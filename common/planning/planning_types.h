@@ -43,6 +43,7 @@ struct RobotPlan {
 struct ExecutablePlan {
   bool valid = false;
   std::vector<Eigen::Vector3d> waypoints;  // topology-graph vertices from the robot to the goal
+  std::vector<uint64_t> keys;              // their vertex keys
   TaskView goal;
 };
 

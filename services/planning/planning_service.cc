@@ -66,6 +66,7 @@ void PlanningService::setup(service::ServiceContext& context) {
   give_up_visits_ = std::max(1, int(parse_positive(args, "give-up-visits", 1.0)));
   blocked_s_ = parse_positive(args, "blocked-s", 2.0);
   stuck_s_ = parse_positive(args, "stuck-s", 8.0);
+  peer_stuck_s_ = parse_positive(args, "peer-stuck-s", 30.0);
 
   auto& m = context.metrics();
   labels_ = {{"robot", robot_id_}};
@@ -119,6 +120,13 @@ void PlanningService::setup(service::ServiceContext& context) {
     if (id == robot_id_) return;
     // A teammate that stops moving and goes idle has finished its route.
     const int state = r.message.state();
+    const Eigen::Vector3d at = position_of(r.message);
+    auto anchor = peer_anchor_.find(id);
+    if (anchor == peer_anchor_.end() || (at - anchor->second).head<2>().norm() > 0.5 ||
+        (state != v1::MOTION_STATE_MOVING && state != v1::MOTION_STATE_BLOCKED)) {
+      peer_anchor_[id] = at;  // moving, or not trying to: not stuck
+      peer_moved_ns_[id] = now_ns();
+    }
     auto [it, fresh] = peer_motion_.emplace(id, state);
     if (!fresh && it->second == v1::MOTION_STATE_MOVING && state == v1::MOTION_STATE_IDLE) peer_finished_ = true;
     it->second = state;
@@ -224,6 +232,8 @@ std::vector<planning::RobotState> PlanningService::team_states(int& self) const 
   for (const auto& r : team.robots) {
     const bool me = r.id == robot_id_;
     if (!me && core::ns_to_s(now - heard_ns_.at(r.id)) > peer_timeout_s_) continue;  // gone silent: not in the team
+    if (!me && peer_moved_ns_.count(r.id) && core::ns_to_s(now_ns() - peer_moved_ns_.at(r.id)) > peer_stuck_s_)
+      continue;  // trying to move for long without moving: stuck, its work goes to the others
     if (me) self = int(out.size());
     out.push_back({r.id, team.species_index(r.species).value_or(0), positions_.at(r.id)});
   }
@@ -251,13 +261,20 @@ bool PlanningService::publish_path() {
   const auto& team = context_->team();
   const int species = team.species_index(team.robots[size_t(self_)].species).value_or(0);
   for (; next_view_ < route_.size(); ++next_view_) {
-    const planning::ExecutablePlan path =
-        planning::executable_path(map_->graph(), positions_.at(robot_id_), species, route_[next_view_]);
+    planning::ExecutablePlan path =
+        planning::executable_path(map_->graph(), positions_.at(robot_id_), species, route_[next_view_], &avoid_);
     if (path.valid) {
+      path_keys_ = path.keys;
+      path_points_ = path.waypoints;
+      if (backoff_) {
+        path.waypoints.insert(path.waypoints.begin(), *backoff_);
+        backoff_.reset();
+      }
       context_->publisher().publish(topics::path(robot_id_), planning::path_to_proto(round_, path, speed_mps_));
       return true;
     }
-    count_attempt(route_[next_view_]);  // no way there from here
+    // No way there from here for us (maybe only around a spot we were blocked at): skip it
+    // without giving up on it for the team.
   }
   return false;
 }
@@ -267,12 +284,18 @@ int64_t PlanningService::now_ns() const { return sim_time_ns_ > 0 ? sim_time_ns_
 void PlanningService::check_progress() {
   const int64_t now = now_ns();
   const Eigen::Vector3d me = positions_.at(robot_id_);
+  if (trail_.empty() || (trail_.back() - me).head<2>().norm() >= 0.5) {
+    trail_.push_back(me);
+    if (trail_.size() > 12) trail_.erase(trail_.begin());
+  }
   if (next_view_ >= route_.size() || progress_ns_ < 0 || (me - progress_pos_).head<2>().norm() > 0.5) {
     progress_pos_ = me;
     progress_ns_ = now;
+    blocked_seen_ = false;
   }
   if (own_motion_ != v1::MOTION_STATE_BLOCKED) blocked_since_ns_ = -1;
   else if (blocked_since_ns_ < 0) blocked_since_ns_ = now;
+  blocked_seen_ = blocked_seen_ || own_motion_ == v1::MOTION_STATE_BLOCKED;
   if (next_view_ >= route_.size()) return;
   const bool blocked = blocked_since_ns_ >= 0 && core::ns_to_s(now - blocked_since_ns_) >= blocked_s_;
   const bool stuck = core::ns_to_s(now - progress_ns_) >= stuck_s_;
@@ -281,6 +304,22 @@ void PlanningService::check_progress() {
   core::LogLine(core::LogLevel::kInfo, "planning")
       << robot_id_ << ": " << (blocked ? "blocked" : "no progress") << " at (" << me.x() << ", " << me.y()
       << "), skipping the view at (" << goal.x() << ", " << goal.y() << ")";
+  if (blocked || blocked_seen_) {
+    // The vertex we were driving to when blocked: the path point after the one nearest to us.
+    size_t near = 0;
+    for (size_t i = 1; i < path_points_.size(); ++i)
+      if ((path_points_[i] - me).head<2>().norm() < (path_points_[near] - me).head<2>().norm()) near = i;
+    for (size_t i = near; i < path_keys_.size(); ++i)
+      if ((path_points_[i] - me).head<2>().norm() > 0.4) {
+        avoid_.insert(path_keys_[i]);
+        break;
+      }
+    for (auto it = trail_.rbegin(); it != trail_.rend(); ++it)
+      if ((*it - me).head<2>().norm() >= 1.0) {
+        backoff_ = *it;
+        break;
+      }
+  }
   count_attempt(route_[next_view_]);
   ++next_view_;
   blocked_since_ns_ = -1;

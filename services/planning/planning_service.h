@@ -6,19 +6,22 @@
 // route and the executable path to the next view (to its safety); a teammate going idle also
 // triggers a round (it finished its route). The active planner comes
 // from the config and can be switched at run time by a MissionCommand.
-// Robustness: teammates not heard from for --peer-timeout-s leave the team of the next round
-// (their clusters go to the others); the ISE supervoxels of a view this robot reached
+// Robustness: teammates not heard from for --peer-timeout-s, or trying to move without moving
+// for --peer-stuck-s, leave the team of the next round (their clusters go to the others); the ISE supervoxels of a view this robot reached
 // --give-up-visits times (or could not find a path to) and that are still uncovered are given
 // up on (no view for them any more), so views that can never be satisfied do not stay forever;
 // the given-up set travels with the team solution, so every planner agrees on what is left.
 // A robot blocked by terrain (--blocked-s of sim time) or making no progress (--stuck-s) skips
-// its current view, which counts as an attempt too.
+// its current view, which counts as an attempt too; the vertex it could not drive to is
+// avoided by its later paths, and its next path first backs off along its recent trail.
 
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
+#include <optional>
 #include <string>
+#include <vector>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -41,7 +44,7 @@ class PlanningService : public service::Service {
   // --cycle-ms N (trigger check period, default 200), --reach-m X (a view counts as reached
   // within this distance, default 1.0), --min-replan-s X (default 1.0), --peer-timeout-s X
   // (default 5.0, wall time), --give-up-visits N (default 1), --blocked-s X (default 2.0),
-  // --stuck-s X (default 8.0).
+  // --stuck-s X (default 8.0), --peer-stuck-s X (default 30.0).
   void setup(service::ServiceContext& context) override;
   void fill_status(v1::ServiceStatus& status) override;
 
@@ -87,12 +90,19 @@ class PlanningService : public service::Service {
   bool peer_finished_ = false;                        // a teammate went idle (route done)
   std::map<std::string, int> peer_motion_;            // robot id -> last v1::MotionState
   std::map<std::string, int64_t> heard_ns_;           // robot id -> monotonic time of its last pose
+  std::map<std::string, Eigen::Vector3d> peer_anchor_;  // robot id -> where it last moved 0.5 m from
+  std::map<std::string, int64_t> peer_moved_ns_;      // robot id -> now_ns() when it got there
   std::unordered_map<uint64_t, int> attempts_;        // ISE supervoxel -> visits of a view for it
   std::unordered_set<uint64_t> ignored_;              // given up on (see the class comment)
   int own_motion_ = 0;                                // our last v1::MotionState
   int64_t blocked_since_ns_ = -1;                     // now_ns() when we became blocked, -1 if not
   Eigen::Vector3d progress_pos_ = Eigen::Vector3d::Zero();  // where we last made progress
   int64_t progress_ns_ = -1;                          // now_ns() of that progress
+  std::unordered_set<uint64_t> avoid_;                // graph vertices we were blocked driving to
+  std::vector<uint64_t> path_keys_;                   // the last published path's vertices
+  std::vector<Eigen::Vector3d> path_points_;          // and their positions
+  std::vector<Eigen::Vector3d> trail_;                // our recent positions, >= 0.5 m apart
+  std::optional<Eigen::Vector3d> backoff_;            // first waypoint of the next path
   int64_t sim_time_ns_ = 0;                           // latest sim time from our pose
   int64_t last_plan_sim_ns_ = 0;
 
@@ -111,6 +121,8 @@ class PlanningService : public service::Service {
   int give_up_visits_ = 1;
   double blocked_s_ = 2.0;
   double stuck_s_ = 8.0;
+  double peer_stuck_s_ = 30.0;
+  bool blocked_seen_ = false;  // blocked at least once since our last progress
 
   metrics::Histogram* stage_views_ = nullptr;
   metrics::Histogram* stage_clustering_ = nullptr;
