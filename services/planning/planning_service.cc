@@ -314,12 +314,13 @@ void PlanningService::check_progress() {
         avoid_.insert(path_keys_[i]);
         break;
       }
-    for (auto it = trail_.rbegin(); it != trail_.rend(); ++it)
-      if ((*it - me).head<2>().norm() >= 1.0) {
-        backoff_ = *it;
-        break;
-      }
   }
+  // Whatever holds us here, leave the way we came before heading for the next view.
+  for (auto it = trail_.rbegin(); it != trail_.rend(); ++it)
+    if ((*it - me).head<2>().norm() >= 1.0) {
+      backoff_ = *it;
+      break;
+    }
   count_attempt(route_[next_view_]);
   ++next_view_;
   blocked_since_ns_ = -1;

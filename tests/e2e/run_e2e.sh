@@ -46,7 +46,7 @@ fail() {
 }
 
 "$launch" --config "$work/team.yaml" --log-dir "$work/logs" \
-  --child-args "--results $work/results --log-level debug --real-time-factor ${E2E_RTF:-2}" > "$work/launch.log" 2>&1 &
+  --child-args "--results $work/results --log-level debug --real-time-factor ${E2E_RTF:-3}" > "$work/launch.log" 2>&1 &
 launcher=$!
 cleanup() { kill "$launcher" 2>/dev/null || true; }
 trap cleanup EXIT
