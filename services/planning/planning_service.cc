@@ -260,6 +260,7 @@ void PlanningService::advance_route() {
 bool PlanningService::publish_path() {
   const auto& team = context_->team();
   const int species = team.species_index(team.robots[size_t(self_)].species).value_or(0);
+  const size_t first = next_view_;
   for (; next_view_ < route_.size(); ++next_view_) {
     planning::ExecutablePlan path =
         planning::executable_path(map_->graph(), positions_.at(robot_id_), species, route_[next_view_], &avoid_);
@@ -275,6 +276,22 @@ bool PlanningService::publish_path() {
     }
     // No way there from here for us (maybe only around a spot we were blocked at): skip it
     // without giving up on it for the team.
+  }
+  if (!avoid_.empty()) {
+    // The spots we avoid cut us off from every view: forget them and try the route again.
+    core::LogLine(core::LogLevel::kInfo, "planning")
+        << robot_id_ << ": no path avoids the " << avoid_.size() << " blocked spot(s); forgetting them";
+    avoid_.clear();
+    next_view_ = first;
+    return publish_path();
+  }
+  if (backoff_) {
+    // Nowhere to go from here on the graph: at least leave the spot we are stuck at.
+    planning::ExecutablePlan out;
+    out.valid = true;
+    out.waypoints = {*backoff_};
+    backoff_.reset();
+    context_->publisher().publish(topics::path(robot_id_), planning::path_to_proto(round_, out, speed_mps_));
   }
   return false;
 }
