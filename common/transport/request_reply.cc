@@ -71,15 +71,7 @@ size_t Responder::drain(size_t max) {
   std::vector<zmq::message_t> frames;
   v1::Header header;
   while (taken < max) {
-    frames.clear();
-    zmq::recv_result_t result;
-    try {
-      result = zmq::recv_multipart(socket_, std::back_inserter(frames), zmq::recv_flags::dontwait);
-    } catch (const zmq::error_t& e) {
-      core::log_once(core::LogLevel::kError, "transport", "responder-recv", std::string("receive failed: ") + e.what());
-      break;
-    }
-    if (!result) break;
+    if (!detail::receive_frames(socket_, frames, "responder")) break;
     ++taken;
     // [routing id][empty][Header][payload]
     if (frames.size() != 4 || frames[1].size() != 0) {
@@ -178,15 +170,7 @@ size_t Requester::drain(size_t max) {
   std::vector<zmq::message_t> frames;
   v1::Header header;
   while (taken < max) {
-    frames.clear();
-    zmq::recv_result_t result;
-    try {
-      result = zmq::recv_multipart(socket_, std::back_inserter(frames), zmq::recv_flags::dontwait);
-    } catch (const zmq::error_t& e) {
-      core::log_once(core::LogLevel::kError, "transport", "requester-recv", std::string("receive failed: ") + e.what());
-      break;
-    }
-    if (!result) break;
+    if (!detail::receive_frames(socket_, frames, "requester")) break;
     ++taken;
     if (frames.size() != 3 || frames[0].size() != 0) {
       drop(accounting_, "request/invalid", DropReason::kMalformed, "reply with wrong frame layout");

@@ -5,6 +5,10 @@
 #include <system_error>
 #include <stdexcept>
 
+#include <zmq_addon.hpp>
+
+#include "common/core/log.h"
+
 namespace hexplore::transport::detail {
 
 void apply_options(zmq::socket_t& socket, const SocketOptions& options) {
@@ -40,6 +44,17 @@ void connect(zmq::socket_t& socket, const std::string& endpoint) {
     socket.connect(endpoint);
   } catch (const zmq::error_t& e) {
     throw std::runtime_error("transport: cannot connect to " + endpoint + ": " + e.what());
+  }
+}
+
+bool receive_frames(zmq::socket_t& socket, std::vector<zmq::message_t>& frames, const char* who) {
+  frames.clear();
+  try {
+    return zmq::recv_multipart(socket, std::back_inserter(frames), zmq::recv_flags::dontwait).has_value();
+  } catch (const zmq::error_t& e) {
+    core::log_once(core::LogLevel::kError, "transport", std::string(who) + "-recv",
+                   std::string("receive failed: ") + e.what());
+    return false;
   }
 }
 

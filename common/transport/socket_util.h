@@ -3,6 +3,7 @@
 // endpoint. Not part of the public API.
 
 #include <string>
+#include <vector>
 
 #include <zmq.hpp>
 
@@ -17,5 +18,8 @@ void apply_options(zmq::socket_t& socket, const SocketOptions& options);
 std::string bind(zmq::socket_t& socket, const std::string& endpoint);
 // Connects; throws std::runtime_error naming the endpoint.
 void connect(zmq::socket_t& socket, const std::string& endpoint);
+// Receives one multipart message without blocking into `frames` (cleared first). False when
+// none is waiting or the receive failed; a failure is logged once per `who` ("subscriber", ...).
+bool receive_frames(zmq::socket_t& socket, std::vector<zmq::message_t>& frames, const char* who);
 
 }  // namespace hexplore::transport::detail

@@ -117,15 +117,7 @@ size_t Subscriber::drain(size_t max) {
   State& s = *state_;
   size_t taken = 0;
   while (taken < max) {
-    s.frames.clear();
-    zmq::recv_result_t result;
-    try {
-      result = zmq::recv_multipart(s.socket, std::back_inserter(s.frames), zmq::recv_flags::dontwait);
-    } catch (const zmq::error_t& e) {
-      core::log_once(core::LogLevel::kError, "transport", "subscriber-recv", std::string("receive failed: ") + e.what());
-      break;
-    }
-    if (!result) break;
+    if (!detail::receive_frames(s.socket, s.frames, "subscriber")) break;
     ++taken;
     handle(s.frames);
   }
