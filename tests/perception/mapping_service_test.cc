@@ -20,6 +20,8 @@
 #include "common/transport/topics.h"
 #include "tests/perception/synthetic_scene.h"
 
+#include "tests/support/feed_until.h"
+
 namespace hexplore::mapping {
 namespace {
 
@@ -97,14 +99,7 @@ class MappingServiceTest : public ::testing::Test {
 
   bool until(const std::function<void()>& feed, const std::function<bool()>& done,
              std::chrono::milliseconds limit = std::chrono::milliseconds(5000)) {
-    const auto deadline = std::chrono::steady_clock::now() + limit;
-    while (std::chrono::steady_clock::now() < deadline) {
-      feed();
-      const auto step_end = std::chrono::steady_clock::now() + std::chrono::milliseconds(50);
-      while (std::chrono::steady_clock::now() < step_end) watch_->receive_one(std::chrono::milliseconds(10));
-      if (done()) return true;
-    }
-    return false;
+    return testing::feed_until(feed, [&] { watch_->receive_one(std::chrono::milliseconds(10)); }, done, limit);
   }
 
   double counter(const std::string& name, const metrics::Labels& labels) {

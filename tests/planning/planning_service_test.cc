@@ -19,6 +19,8 @@
 #include "common/transport/subscriber.h"
 #include "common/transport/topics.h"
 
+#include "tests/support/feed_until.h"
+
 namespace hexplore::planning_service {
 namespace {
 
@@ -98,17 +100,11 @@ class PlanningServiceTest : public ::testing::Test {
   // Serves hlmap requests and collects outputs until `done` or `limit`.
   bool until(const std::function<void()>& feed, const std::function<bool()>& done,
              std::chrono::milliseconds limit = std::chrono::milliseconds(8000)) {
-    const auto deadline = std::chrono::steady_clock::now() + limit;
-    while (std::chrono::steady_clock::now() < deadline) {
-      feed();
-      const auto step_end = std::chrono::steady_clock::now() + std::chrono::milliseconds(50);
-      while (std::chrono::steady_clock::now() < step_end) {
-        hlmap_->drain(16);
-        watch_->receive_one(std::chrono::milliseconds(5));
-      }
-      if (done()) return true;
-    }
-    return false;
+    const auto pump = [&] {
+      hlmap_->drain(16);
+      watch_->receive_one(std::chrono::milliseconds(5));
+    };
+    return testing::feed_until(feed, pump, done, limit);
   }
 
   std::unique_ptr<service::ServiceHost> host_;

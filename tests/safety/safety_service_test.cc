@@ -21,6 +21,8 @@
 #include "hexplore/v1/pose.pb.h"
 #include "hexplore/v1/safety.pb.h"
 
+#include "tests/support/feed_until.h"
+
 namespace hexplore::safety {
 namespace {
 
@@ -92,14 +94,7 @@ class SafetyServiceTest : public ::testing::Test {
   // `done` holds for the latest outputs, or `limit` passes.
   bool until(const std::function<void()>& feed, const std::function<bool()>& done,
              std::chrono::milliseconds limit = std::chrono::milliseconds(5000)) {
-    const auto deadline = std::chrono::steady_clock::now() + limit;
-    while (std::chrono::steady_clock::now() < deadline) {
-      feed();
-      const auto step_end = std::chrono::steady_clock::now() + std::chrono::milliseconds(50);
-      while (std::chrono::steady_clock::now() < step_end) watch_->receive_one(std::chrono::milliseconds(10));
-      if (done()) return true;
-    }
-    return false;
+    return testing::feed_until(feed, [&] { watch_->receive_one(std::chrono::milliseconds(10)); }, done, limit);
   }
 
   // Each pose advances the driver's sim time by 50 ms (the feed runs every 50 ms of wall time).

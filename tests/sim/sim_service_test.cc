@@ -16,6 +16,8 @@
 #include "common/transport/subscriber.h"
 #include "common/transport/topics.h"
 
+#include "tests/support/feed_until.h"
+
 namespace hexplore::sim {
 namespace {
 
@@ -80,14 +82,7 @@ class SimServiceTest : public ::testing::Test {
 
   bool until(const std::function<void()>& feed, const std::function<bool()>& done,
              std::chrono::milliseconds limit = std::chrono::milliseconds(8000)) {
-    const auto deadline = std::chrono::steady_clock::now() + limit;
-    while (std::chrono::steady_clock::now() < deadline) {
-      feed();
-      const auto step_end = std::chrono::steady_clock::now() + std::chrono::milliseconds(50);
-      while (std::chrono::steady_clock::now() < step_end) watch_->receive_one(std::chrono::milliseconds(10));
-      if (done()) return true;
-    }
-    return false;
+    return testing::feed_until(feed, [&] { watch_->receive_one(std::chrono::milliseconds(10)); }, done, limit);
   }
 
   void follow_to(double x, double y) {
