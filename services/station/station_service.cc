@@ -105,8 +105,8 @@ void StationService::subscribe_team(service::ServiceContext& context) {
   sub.on<v1::RobotPose>(std::string(transport::topics::kTeamPose), [this](const auto& r) {
     const std::string robot = r.header.robot_id();
     if (!recorder_->on_pose(robot, core::ns_to_s(r.header.sim_time_ns()), r.message)) return;
-    if (!heard_[robot] && !first_heard_wall_s_) first_heard_wall_s_ = wall_s();
-    heard_[robot] = true;
+    if (!first_heard_wall_s_) first_heard_wall_s_ = wall_s();
+    heard_.insert(robot);
     recorder_->on_team_message(robot, r.topic, wire_bytes(r));
   });
   sub.on<v1::MapIncrement>(std::string(transport::topics::kTeamMap),

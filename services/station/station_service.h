@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "common/service/service.h"
@@ -51,7 +52,7 @@ class StationService : public service::Service {
   std::unique_ptr<CompletenessEvaluator> evaluator_;
   std::unique_ptr<TeamRecorder> recorder_;
   std::unique_ptr<MissionMonitor> monitor_;
-  std::map<std::string, bool> heard_;  // robots whose pose arrived
+  std::set<std::string> heard_;  // robots whose pose arrived
   std::optional<double> first_heard_wall_s_;
   double last_snapshot_s_ = -1e9;
   double last_progress_s_ = -1e9;
