@@ -143,6 +143,13 @@ void SimService::setup(service::ServiceContext& context) {
   emergency_stops_ = m.counter_family("hexplore_sim_emergency_stops_total", "Emergency stops obeyed")->add(labels);
   odometry_m_ = m.gauge_family("hexplore_sim_odometry_meters", "Trajectory length travelled")->add(labels);
   sim_time_s_ = m.gauge_family("hexplore_sim_time_seconds", "Simulation time")->add(labels);
+  auto* position = m.gauge_family("hexplore_sim_position_meters", "Body position in the scene frame");
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) position_m_[a] = position->add({{"robot", robot_id_}, {"axis", axes[a]}});
+  auto* state = m.gauge_family("hexplore_sim_motion_state", "1 for the robot's current motion state, 0 for the others");
+  for (MotionState s : {MotionState::kIdle, MotionState::kMoving, MotionState::kStopped, MotionState::kBlocked,
+                        MotionState::kEmergencyStop})
+    motion_state_[s] = state->add({{"robot", robot_id_}, {"state", to_string(s)}});
 
   // Inputs: own safety (motion), teammates' sims (team/pose), the station (mission).
   context.connect(robot_id_, core::ServiceKind::kSafety);
@@ -166,6 +173,7 @@ void SimService::setup(service::ServiceContext& context) {
   core::LogLine(core::LogLevel::kInfo, "sim") << robot_id_ << ": " << scene_.name << " (" << scene_.mesh.triangle_count()
                                               << " triangles), " << species->name << " at " << where << ", rtf " << rtf;
   context.set_state(v1::SERVICE_STATE_RUNNING, to_string(motion_->state()));
+  update_gauges();
   publish_pose();
 }
 
@@ -250,14 +258,21 @@ void SimService::tick() {
     collisions_->increment(motion_->collisions() - reported_collisions_);
     reported_collisions_ = motion_->collisions();
   }
-  odometry_m_->set(motion_->odometry_m());
-  sim_time_s_->set(core::ns_to_s(clock_.now_ns()));
+  update_gauges();
   publish_pose();
   if (clock_.now_ns() >= next_scan_ns_) {
     next_scan_ns_ = clock_.now_ns() + scan_period_ns_;
     scan_all();
   }
   context_->set_state(v1::SERVICE_STATE_RUNNING, to_string(motion_->state()));
+}
+
+void SimService::update_gauges() {
+  odometry_m_->set(motion_->odometry_m());
+  sim_time_s_->set(core::ns_to_s(clock_.now_ns()));
+  const Eigen::Vector3d at = motion_->ground_position();
+  for (int a = 0; a < 3; ++a) position_m_[a]->set(at[a]);
+  for (auto& [s, gauge] : motion_state_) gauge->set(s == motion_->state() ? 1.0 : 0.0);
 }
 
 void SimService::scan_all() {

@@ -58,6 +58,7 @@ class SimService : public service::Service {
   void tick();
   void scan_all();
   void publish_pose();
+  void update_gauges();
   std::vector<ProxyBox> live_teammates() const;
 
   service::ServiceContext* context_ = nullptr;
@@ -80,6 +81,8 @@ class SimService : public service::Service {
   metrics::Counter* emergency_stops_ = nullptr;
   metrics::Gauge* odometry_m_ = nullptr;
   metrics::Gauge* sim_time_s_ = nullptr;
+  metrics::Gauge* position_m_[3] = {nullptr, nullptr, nullptr};  // x, y, z
+  std::map<MotionState, metrics::Gauge*> motion_state_;         // 1 for the current state
 };
 
 // ScanFrame / RobotPose messages from the simulator's types (exposed for tests).
