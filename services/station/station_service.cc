@@ -1,9 +1,11 @@
 #include "services/station/station_service.h"
 
 #include <cstdio>
+#include <utility>
 
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
+#include "common/core/endpoints.h"
 #include "common/core/log.h"
 #include "common/station/results_writer.h"
 #include "common/transport/topics.h"
@@ -42,14 +44,45 @@ bool parse_bool(const std::map<std::string, std::string>& args, const std::strin
   throw core::ConfigError("<command line>", "--" + name, "expected true or false, got '" + it->second + "'");
 }
 
-double wall_s() { return core::ns_to_s(core::monotonic_ns()); }
-
 template <typename M>
 size_t wire_bytes(const transport::Received<M>& r) {
   return r.topic.size() + r.header.ByteSizeLong() + r.message.ByteSizeLong();
 }
 
 }  // namespace
+
+StationGauges::StationGauges(metrics::Registry& registry, const core::TeamConfig& team) {
+  const std::string station(core::kStationId);
+  auto* completeness = registry.gauge_family(
+      "hexplore_station_completeness_ratio",
+      "Reconstruction completeness of the team's union map (scope team) and of what the team could observe "
+      "(scope observable), at the last snapshot round");
+  team_ = completeness->add({{"robot", station}, {"scope", "team"}});
+  observable_ = completeness->add({{"robot", station}, {"scope", "observable"}});
+  // Labelled with the robot it is about, so that the dashboards' robot selector applies.
+  auto* per_robot = registry.gauge_family("hexplore_station_robot_completeness_ratio",
+                                          "Reconstruction completeness of one robot's own map, at the last snapshot round");
+  for (const auto& robot : team.robots) per_robot_[robot.id] = per_robot->add({{"robot", robot.id}});
+  mission_time_s_ = registry.gauge_family("hexplore_station_mission_time_seconds",
+                                          "Sim time since the mission start (0 before it)")->add({{"robot", station}});
+  robots_heard_ = registry.gauge_family("hexplore_station_robots_heard",
+                                        "Robots whose team/pose the station has heard")->add({{"robot", station}});
+  mission_started_ = registry.gauge_family("hexplore_station_mission_started",
+                                           "1 once the station started the mission")->add({{"robot", station}});
+}
+
+void StationGauges::on_completeness(const CompletenessSample& sample) {
+  team_->set(sample.team);
+  observable_->set(sample.team_observable);
+  for (const auto& [robot, value] : sample.per_robot)
+    if (auto it = per_robot_.find(robot); it != per_robot_.end()) it->second->set(value);
+}
+
+void StationGauges::on_tick(double mission_time_s, size_t robots_heard, bool started) {
+  mission_time_s_->set(mission_time_s);
+  robots_heard_->set(static_cast<double>(robots_heard));
+  mission_started_->set(started ? 1.0 : 0.0);
+}
 
 StationOptions StationOptions::from_arguments(const std::map<std::string, std::string>& args) {
   StationOptions o;
@@ -78,6 +111,7 @@ void StationService::setup(service::ServiceContext& context) {
   monitor.settle_s = options_.settle_s;
   monitor.silent_after_s = std::max(10.0, 2.0 * context.team().params.eta_t_s);
   monitor_ = std::make_unique<MissionMonitor>(monitor);
+  gauges_ = std::make_unique<StationGauges>(context.metrics(), context.team());
 
   subscribe_team(context);
   context.responder().serve<v1::MissionCommand, v1::ServiceStatus>(
@@ -105,7 +139,7 @@ void StationService::subscribe_team(service::ServiceContext& context) {
   sub.on<v1::RobotPose>(std::string(transport::topics::kTeamPose), [this](const auto& r) {
     const std::string robot = r.header.robot_id();
     if (!recorder_->on_pose(robot, core::ns_to_s(r.header.sim_time_ns()), r.message)) return;
-    if (!first_heard_wall_s_) first_heard_wall_s_ = wall_s();
+    if (!first_heard_s_) first_heard_s_ = loop_s();
     heard_.insert(robot);
     recorder_->on_team_message(robot, r.topic, wire_bytes(r));
   });
@@ -133,10 +167,11 @@ void StationService::publish_mission(const v1::MissionCommand& command) {
 
 void StationService::tick() {
   if (finished_) return;
+  gauges_->on_tick(recorder_->mission_time_s(), heard_.size(), recorder_->started());
   const size_t robots = context_->team().robots.size();
   if (!recorder_->started()) {
     const bool everyone = heard_.size() == robots;
-    const bool waited = first_heard_wall_s_ && wall_s() - *first_heard_wall_s_ > options_.start_wait_s;
+    const bool waited = first_heard_s_ && loop_s() - *first_heard_s_ > options_.start_wait_s;
     if (options_.autostart && (everyone || waited)) {
       v1::MissionCommand start;
       start.mutable_start();
@@ -173,7 +208,10 @@ void StationService::request_snapshots() {
                 evaluator_->set_robot_map(id, reply->message.resolution_m(),
                                           {reply->message.keys_xyz().data(),
                                            static_cast<size_t>(reply->message.keys_xyz_size())});
-              if (snapshots_pending_ == 0) recorder_->on_completeness(evaluator_->evaluate(recorder_->mission_time_s()));
+              if (snapshots_pending_ > 0) return;
+              CompletenessSample sample = evaluator_->evaluate(recorder_->mission_time_s());
+              gauges_->on_completeness(sample);
+              recorder_->on_completeness(std::move(sample));
             },
             kSnapshotTimeout);
   }
@@ -198,10 +236,10 @@ void StationService::finish(const std::string& reason) {
   publish_mission(stop);
   core::LogLine(core::LogLevel::kInfo, "station") << "mission over: " << reason << "; fetching final maps";
   // One last snapshot round, then write and stop; waits at most kFinalSnapshotWaitS.
-  const double deadline = wall_s() + kFinalSnapshotWaitS;
+  const double deadline = loop_s() + kFinalSnapshotWaitS;
   if (snapshots_pending_ == 0) request_snapshots();
   context_->loop().add_timer(kTick, [this, deadline] {
-    if (snapshots_pending_ > 0 && wall_s() < deadline) return;
+    if (snapshots_pending_ > 0 && loop_s() < deadline) return;
     auto& record = recorder_->record();
     record.end_reason = end_reason_;
     record.exploration_time_s = recorder_->mission_time_s();

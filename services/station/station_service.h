@@ -5,11 +5,13 @@
 // periodic map snapshots of every robot's mapping service. When the mission is over it
 // writes the results folder and stops (its process exit ends a launched team).
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
 #include <string>
 
+#include "common/metrics/registry.h"
 #include "common/service/service.h"
 #include "common/station/completeness_evaluator.h"
 #include "common/station/mission_monitor.h"
@@ -29,6 +31,23 @@ struct StationOptions {
 
   // From the service's "--name value" arguments; throws core::ConfigError on a bad value.
   static StationOptions from_arguments(const std::map<std::string, std::string>& arguments);
+};
+
+// The station's own Prometheus gauges (team overview dashboard). Every series exists from
+// setup on, at 0, so that dashboards have data before the first snapshot round ends.
+class StationGauges {
+ public:
+  StationGauges(metrics::Registry& registry, const core::TeamConfig& team);
+  void on_completeness(const CompletenessSample& sample);
+  void on_tick(double mission_time_s, size_t robots_heard, bool started);
+
+ private:
+  metrics::Gauge* team_ = nullptr;
+  metrics::Gauge* observable_ = nullptr;
+  std::map<std::string, metrics::Gauge*> per_robot_;
+  metrics::Gauge* mission_time_s_ = nullptr;
+  metrics::Gauge* robots_heard_ = nullptr;
+  metrics::Gauge* mission_started_ = nullptr;
 };
 
 class StationService : public service::Service {
@@ -52,8 +71,10 @@ class StationService : public service::Service {
   std::unique_ptr<CompletenessEvaluator> evaluator_;
   std::unique_ptr<TeamRecorder> recorder_;
   std::unique_ptr<MissionMonitor> monitor_;
+  std::unique_ptr<StationGauges> gauges_;
   std::set<std::string> heard_;  // robots whose pose arrived
-  std::optional<double> first_heard_wall_s_;
+  std::optional<double> first_heard_s_;  // loop clock (sim time in lockstep)
+  double loop_s() const { return core::ns_to_s(context_->now_ns()); }
   double last_snapshot_s_ = -1e9;
   double last_progress_s_ = -1e9;
   int snapshots_pending_ = 0;
