@@ -38,8 +38,25 @@ def target(expr, legend, ref):
     return {"refId": ref, "datasource": DATASOURCE, "expr": expr, "legendFormat": legend, "range": True}
 
 
-def panel(title, description, exprs, unit="short", kind="timeseries", stack=False, w=12, h=8):
-    """exprs: list of (expr, legend). Placement is filled in by layout()."""
+# Default state-timeline value mapping: hexplore_safety_yielding.
+YIELDING_STATES = ["driving", "yielding"]
+YIELDING_COLORS = ["green", "orange"]
+# hexplore_sim_motion_state's states (common/sim robot_motion.cc to_string), coded 0..4 by motion_state_code().
+MOTION_STATES = ["idle", "moving", "stopped", "blocked", "emergency stop"]
+MOTION_COLORS = ["blue", "green", "yellow", "orange", "red"]
+
+
+def value_mappings(texts, colors):
+    """Grafana value mappings 0, 1, ... -> texts."""
+    return [{"type": "value", "options": {str(i): {"text": t, "color": c, "index": i}
+                                          for i, (t, c) in enumerate(zip(texts, colors))}}]
+
+
+def panel(title, description, exprs, unit="short", kind="timeseries", stack=False, w=12, h=8,
+          states=(YIELDING_STATES, YIELDING_COLORS), matrix=None):
+    """exprs: list of (expr, legend). Placement is filled in by layout(). states: the value mapping
+    of a state-timeline. matrix: (row label, column label) to pivot an instant table on, for
+    tables whose values are the answer (otherwise a table shows only labels)."""
     refs = "ABCDEFGH"
     p = {
         "type": kind,
@@ -68,13 +85,16 @@ def panel(title, description, exprs, unit="short", kind="timeseries", stack=Fals
     elif kind == "state-timeline":
         p["options"] = {"showValue": "never", "mergeValues": True, "rowHeight": 0.8,
                         "legend": {"showLegend": True, "displayMode": "list", "placement": "bottom"}}
-        p["fieldConfig"]["defaults"]["mappings"] = [
-            {"type": "value", "options": {"0": {"text": "driving", "color": "green", "index": 0},
-                                          "1": {"text": "yielding", "color": "orange", "index": 1}}}]
+        p["fieldConfig"]["defaults"]["mappings"] = value_mappings(*states)
     elif kind == "table":
         p["options"] = {"showHeader": True}
-        # Instant queries come back as Time | labels... | Value; the labels are the answer.
-        p["transformations"] = [{"id": "organize", "options": {"excludeByName": {"Time": True, "Value": True}}}]
+        if matrix:
+            # One row per `row` label, one column per `column` label, the values in the cells.
+            p["transformations"] = [{"id": "groupingToMatrix", "options": {
+                "rowField": matrix[0], "columnField": matrix[1], "valueField": "Value"}}]
+        else:
+            # Instant queries come back as Time | labels... | Value; the labels are the answer.
+            p["transformations"] = [{"id": "organize", "options": {"excludeByName": {"Time": True, "Value": True}}}]
         for t in p["targets"]:
             t.update({"format": "table", "instant": True, "range": False})
     return p
@@ -264,9 +284,54 @@ def team_overview():
               [(f"count by (robot) (hexplore_process_uptime_seconds{{{ROBOT}}})", "{{robot}}")],
               unit="short", kind="stat", w=24, h=4),
     ]
-    panels += team_panels()
+    panels += mission_panels() + robot_panels() + team_panels()
     return dashboard("hexplore-team-overview", "hexplore / team overview",
                      "The exploration as it happens: completeness, robots, planning.", panels)
+
+
+def mission_panels():
+    """The station's view: completeness from its periodic map snapshots, mission clock."""
+    team = "hexplore_station_completeness_ratio"
+    return [
+        panel("Completeness over time",
+              "Share of the scene's ground-truth surface samples covered by occupied voxels, from the station's "
+              "periodic snapshots of every robot's map: the team's union, the union restricted to what the "
+              "team could observe, and each robot's own map.",
+              [(f'max({team}{{scope="team"}})', "team"),
+               (f'max({team}{{scope="observable"}})', "team, observable"),
+               (f"max by (robot) (hexplore_station_robot_completeness_ratio{{{ROBOT}}})", "{{robot}}")],
+              unit="percentunit", w=18, h=9),
+        panel("Mission",
+              "Sim time since the station started the mission, and the robots it hears.",
+              [("max(hexplore_station_mission_time_seconds)", "mission time (s)"),
+               ("max(hexplore_station_robots_heard)", "robots heard"),
+               (f'max({team}{{scope="team"}}) * 100', "team completeness (%)")],
+              unit="none", kind="stat", w=6, h=9),
+    ]
+
+
+def motion_state_code(selector):
+    """One series per robot: the index of its current motion state in MOTION_STATES."""
+    terms = [f'{i} * max by (robot) (hexplore_sim_motion_state{{{selector}, state="{state}"}})'
+             for i, state in enumerate(MOTION_STATES) if i > 0]
+    return " + ".join(terms)
+
+
+def robot_panels():
+    position = "hexplore_sim_position_meters"
+    return [
+        panel("Robot motion state",
+              "What each robot's simulated body does: " + ", ".join(MOTION_STATES) + ".",
+              [(motion_state_code(ROBOT), "{{robot}}")], unit="short", kind="state-timeline",
+              states=(MOTION_STATES, MOTION_COLORS), w=24, h=6),
+        panel("Robot positions over time",
+              "Each robot's x and y in the scene frame (simulator ground truth).",
+              [(f'max by (robot, axis) ({position}{{{ROBOT}, axis=~"x|y"}})', "{{robot}} {{axis}}")], unit="m"),
+        panel("Robot positions now",
+              "Each robot's position in the scene frame (x, y, z in metres).",
+              [(f"max by (robot, axis) ({position}{{{ROBOT}}})", "{{robot}} {{axis}}")],
+              unit="m", kind="table", matrix=("robot", "axis")),
+    ]
 
 
 def team_panels():
