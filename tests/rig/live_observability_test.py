@@ -2,7 +2,8 @@
 """Observability end to end: starts a short two-robot team (one SLUGCAT, one MR1000) on
 loopback with metrics on, starts a real Prometheus server scraping every service, and checks
 through Prometheus's HTTP API that every PromQL expression of the dashboards parses and
-returns data.
+returns data, and that the team makes progress (PROGRESS: mission started, completeness
+measured, a robot moving).
 
 usage: live_observability_test.py SOURCE_DIR PROMETHEUS_BIN service=EXECUTABLE...
        (service: sim, mapping, hlmap, planning, safety, station)
@@ -38,6 +39,14 @@ RATE_WINDOW = "15s"          # stands in for Grafana's $__rate_interval at a 1 s
 # Expressions about things a healthy run does not do: they only have to parse.
 EVENTS_OF_A_FAULTY_RUN = ("fault_injected", "hexplore_mapping_scans_rejected_total")
 DEADLINE_S = 45.0            # from the first service start to the last expression with data
+# The team really runs, not only exports zeros: the station started the mission and its first
+# snapshot round measured completeness, and a robot moved.
+PROGRESS = {
+    "progress: the station started the mission": "max(hexplore_station_mission_started) == 1",
+    "progress: team completeness measured": 'max(hexplore_station_completeness_ratio{scope="team"}) > 0',
+    "progress: every robot's own completeness measured": f"count(hexplore_station_robot_completeness_ratio > 0) == {len(ROBOTS)}",
+    "progress: a robot is moving": 'max(hexplore_sim_motion_state{state="moving"}) == 1',
+}
 
 
 def port_free(port):
@@ -180,6 +189,7 @@ def main(argv):
         send_malformed_request(base + 0 * PORTS_PER_ROBOT + SERVICE_INDEX["hlmap"] * 2 + 1)
 
         pending = dict(dashboard_expressions(source))
+        pending.update(PROGRESS)
         only_parse = {w for w, e in pending.items() if any(m in e for m in EVENTS_OF_A_FAULTY_RUN)}
         errors = {}
         while pending and time.monotonic() - start < DEADLINE_S:
@@ -194,8 +204,8 @@ def main(argv):
                 time.sleep(1.0)
         for where, expr in pending.items():
             errors[where] = f"returned no data within {DEADLINE_S:.0f} s\n    {expr}"
-        total = len(dashboard_expressions(source))
-        print(f"{total - len(errors)} of {total} dashboard expressions evaluate with data "
+        total = len(dashboard_expressions(source)) + len(PROGRESS)
+        print(f"{total - len(errors)} of {total} dashboard and progress expressions evaluate with data "
               f"({len(only_parse)} about faults only had to parse) after {time.monotonic() - start:.1f} s")
         for where in sorted(errors):
             print(f"FAIL {where}: {errors[where]}", file=sys.stderr)
