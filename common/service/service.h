@@ -17,6 +17,7 @@
 #include "common/core/team_config.h"
 #include "common/metrics/registry.h"
 #include "common/metrics/standard_families.h"
+#include "common/service/lockstep_driver.h"
 #include "common/transport/accounting.h"
 #include "common/transport/context.h"
 #include "common/transport/event_loop.h"
@@ -86,6 +87,11 @@ class ServiceContext {
   void set_state(v1::ServiceState state, std::string detail = "");
   // Seconds since this service started.
   double uptime_s() const;
+  // True in the reproducible fast mode (HostOptions::lockstep): the loop's clock is sim time,
+  // so timer periods are sim seconds and nothing may depend on wall time (e.g. time budgets).
+  bool lockstep() const { return loop_.in_lockstep(); }
+  // Now on the loop's clock: use for time-outs and ages (monotonic, or sim time in lockstep).
+  int64_t now_ns() const { return loop_.now_ns(); }
 
  private:
   friend class ServiceHost;
@@ -124,6 +130,9 @@ struct HostOptions {
   std::map<std::string, std::string> arguments;
   // Fault injection on every service's PUB socket (rig tests of radio drop-outs).
   transport::FaultInjection publisher_faults;
+  // Reproducible fast mode (needs compose): every loop steps together on a virtual clock;
+  // see lockstep_driver.h.
+  bool lockstep = false;
 };
 
 // Runs one or several services in this process, each on its own loop thread.
@@ -161,7 +170,14 @@ class ServiceHost {
 
  private:
   struct Entry;
+  class LockstepEntry;
   transport::SocketOptions publisher_options(const ServiceContext& ctx) const;
+  // Binds the publisher, runs the service's setup() and adds the status timer; throws.
+  void setup_entry(Entry& entry);
+  // Runs on_shutdown(), publishes the last status and closes the sockets.
+  void finish_entry(Entry& entry);
+  void start_threads();
+  void start_lockstep();
   // First member, so it is destroyed last: zmq_ctx_term waits for every socket to close.
   transport::Context transport_;
   core::TeamConfig team_;
@@ -170,6 +186,8 @@ class ServiceHost {
   metrics::TransportFamilies families_;
   int metrics_port_ = 0;
   std::vector<std::unique_ptr<Entry>> entries_;
+  std::vector<std::unique_ptr<LockstepEntry>> lockstep_entries_;
+  std::unique_ptr<LockstepDriver> lockstep_;
 };
 
 // main() of a single-service process:
@@ -183,9 +201,10 @@ int run_service_main(int argc, char** argv, const ServiceFactory& factory);
 // main() of a composed process: every factory for every --robot given (repeatable), inproc transport.
 int run_composition_main(int argc, char** argv, const std::vector<ServiceFactory>& factories);
 
-// main() of a whole team in one process (fast mode): every robot factory for every --robot,
-// plus one station; inproc transport. Ends when the station ends (mission over) or any service
-// fails, stopping the rest.
+// main() of a whole team in one process (the reproducible fast mode): every robot factory for
+// every --robot, plus one station; inproc transport, all loops in lockstep on sim time (see
+// lockstep_driver.h), as fast as the machine allows. Ends when the station ends (mission over)
+// or any service fails, stopping the rest.
 int run_team_main(int argc, char** argv, const std::vector<ServiceFactory>& robot_factories,
                   const ServiceFactory& station);
 

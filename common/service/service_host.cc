@@ -45,6 +45,8 @@ ServiceHost::ServiceHost(core::TeamConfig team, HostOptions options)
 ServiceHost::~ServiceHost() {
   stop();
   wait();
+  lockstep_.reset();
+  lockstep_entries_.clear();
   entries_.clear();  // sockets are closed by now; transport_ (destroyed last) waits out linger
 }
 
@@ -63,8 +65,71 @@ void ServiceHost::add(std::unique_ptr<Service> service, const std::string& robot
   entries_.push_back(std::move(entry));
 }
 
+// One service as the lockstep driver sees it.
+class ServiceHost::LockstepEntry : public LockstepWorker {
+ public:
+  LockstepEntry(ServiceHost& host, Entry& entry) : host_(host), entry_(entry) {}
+  void setup() override {
+    entry_.context->loop_.enter_lockstep();
+    host_.setup_entry(entry_);
+    set_up_ = true;
+  }
+  size_t collect() override { return entry_.context->loop_.collect(); }
+  void discard() override { entry_.context->loop_.discard_collected(); }
+  void dispatch(int64_t now_ns, bool run_due) override {
+    try {
+      entry_.context->loop_.dispatch(now_ns, run_due);
+    } catch (const std::exception& e) {
+      entry_.failed.store(true);
+      core::LogLine(core::LogLevel::kError, entry_.context->identity().service) << "stopped by an exception: " << e.what();
+      throw;
+    }
+  }
+  std::optional<int64_t> next_due_ns() const override { return entry_.context->loop_.next_due_ns(); }
+  bool stop_requested() const override { return entry_.context->loop_.stop_requested(); }
+  void finish() override {
+    if (set_up_) {
+      try {
+        host_.finish_entry(entry_);
+      } catch (const std::exception& e) {
+        core::LogLine(core::LogLevel::kError, entry_.context->identity().service) << "shutdown failed: " << e.what();
+      }
+    }
+    entry_.context->close_sockets();
+    entry_.finished.store(true);
+  }
+
+ private:
+  ServiceHost& host_;
+  Entry& entry_;
+  bool set_up_ = false;
+};
+
+void ServiceHost::setup_entry(Entry& entry) {
+  ServiceContext& ctx = *entry.context;
+  ctx.publisher_ = std::make_unique<transport::Publisher>(
+      transport_, ctx.identity_, core::bind_endpoint(team_, ctx.robot_id(), ctx.kind(), core::SocketRole::kPublish),
+      publisher_options(ctx), &ctx.accounting_);
+  ctx.loop_.add(*ctx.publisher_);
+  entry.service->setup(ctx);
+  if (ctx.state_ == v1::SERVICE_STATE_STARTING) ctx.state_ = v1::SERVICE_STATE_RUNNING;
+  ctx.loop_.add_timer(options_.status_period, [&entry] {
+    entry.process->update();
+    entry.context->publish_status(*entry.service);
+  });
+}
+
+void ServiceHost::finish_entry(Entry& entry) {
+  ServiceContext& ctx = *entry.context;
+  ctx.state_ = v1::SERVICE_STATE_STOPPING;
+  entry.service->on_shutdown(ctx);
+  ctx.publish_status(*entry.service);
+}
+
 void ServiceHost::start() {
   if (entries_.empty()) throw std::logic_error("service: ServiceHost::start() with no service added");
+  if (options_.lockstep && !options_.compose)
+    throw std::logic_error("service: lockstep needs every service in one process (HostOptions::compose)");
   int port = 0;
   if (options_.metrics_port) {
     port = *options_.metrics_port;
@@ -77,7 +142,23 @@ void ServiceHost::start() {
     metrics_port_ = prometheus.expose(port < 0 ? 0 : port, options_.metrics_bind_address);
     core::LogLine(core::LogLevel::kInfo, "service") << "serving /metrics on port " << metrics_port_;
   }
+  if (options_.lockstep) start_lockstep();
+  else start_threads();
+}
 
+void ServiceHost::start_lockstep() {
+  std::vector<LockstepWorker*> workers;
+  for (auto& entry : entries_) {
+    lockstep_entries_.push_back(std::make_unique<LockstepEntry>(*this, *entry));
+    workers.push_back(lockstep_entries_.back().get());
+  }
+  lockstep_ = std::make_unique<LockstepDriver>(std::move(workers));
+  lockstep_->start();  // rethrows a setup's exception after everything closed
+  core::LogLine(core::LogLevel::kInfo, "service") << "lockstep: " << entries_.size()
+                                                   << " services step together on sim time";
+}
+
+void ServiceHost::start_threads() {
   std::vector<std::future<void>> ready;
   for (auto& entry_ptr : entries_) {
     Entry& entry = *entry_ptr;
@@ -87,24 +168,12 @@ void ServiceHost::start() {
       ServiceContext& ctx = *entry.context;
       bool setup_done = false;
       try {
-        ctx.publisher_ = std::make_unique<transport::Publisher>(
-            transport_, ctx.identity_,
-            core::bind_endpoint(team_, ctx.robot_id(), ctx.kind(), core::SocketRole::kPublish), publisher_options(ctx),
-            &ctx.accounting_);
-        ctx.loop_.add(*ctx.publisher_);
-        entry.service->setup(ctx);
-        if (ctx.state_ == v1::SERVICE_STATE_STARTING) ctx.state_ = v1::SERVICE_STATE_RUNNING;
-        ctx.loop_.add_timer(options_.status_period, [&entry] {
-          entry.process->update();
-          entry.context->publish_status(*entry.service);
-        });
+        setup_entry(entry);
         setup_done = true;
         promise->set_value();
         ctx.publish_status(*entry.service);
         ctx.loop_.run();
-        ctx.state_ = v1::SERVICE_STATE_STOPPING;
-        entry.service->on_shutdown(ctx);
-        ctx.publish_status(*entry.service);
+        finish_entry(entry);
       } catch (...) {
         if (!setup_done) {
           promise->set_exception(std::current_exception());
@@ -149,6 +218,7 @@ void ServiceHost::stop() {
 }
 
 void ServiceHost::wait() {
+  if (lockstep_) lockstep_->join();
   for (auto& entry : entries_)
     if (entry->thread.joinable()) entry->thread.join();
 }

@@ -125,6 +125,7 @@ int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, boo
     options.metrics_port = cl.metrics_port;
     options.status_period = std::chrono::milliseconds(cl.status_period_ms);
     options.compose = compose;
+    options.lockstep = station != nullptr;  // the one-process team is the reproducible fast mode
     options.arguments = cl.arguments;
     options.publisher_faults = cl.faults;
     host = std::make_unique<ServiceHost>(core::load_team_config(cl.config), options);

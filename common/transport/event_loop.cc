@@ -11,6 +11,8 @@
 
 #include "common/core/clock.h"
 #include "common/core/log.h"
+#include "common/transport/socket_util.h"
+#include "hexplore/v1/header.pb.h"
 
 namespace hexplore::transport {
 
@@ -22,6 +24,7 @@ EventLoop::~EventLoop() { close(wake_fd_); }
 
 void EventLoop::add(Pollable& socket) {
   if (std::find(sockets_.begin(), sockets_.end(), &socket) == sockets_.end()) sockets_.push_back(&socket);
+  socket.set_clock(&clock_);
   items_dirty_ = true;
 }
 
@@ -33,7 +36,7 @@ void EventLoop::remove(Pollable& socket) {
 EventLoop::TimerId EventLoop::add_timer(std::chrono::nanoseconds period, std::function<void()> fn) {
   if (period.count() <= 0) throw std::invalid_argument("transport: timer period must be > 0");
   const TimerId id = next_timer_id_++;
-  timers_.emplace(id, Timer{period, core::monotonic_ns() + period.count(), std::move(fn)});
+  timers_.emplace(id, Timer{period, clock_.now_ns() + period.count(), std::move(fn)});
   return id;
 }
 
@@ -82,8 +85,17 @@ void EventLoop::run_timers(int64_t now_ns) {
   }
 }
 
+void EventLoop::run_deadlines(int64_t now_ns) {
+  // A snapshot: a deadline callback may add or remove sockets.
+  const std::vector<Pollable*> sockets = sockets_;
+  for (Pollable* p : sockets) {
+    if (std::find(sockets_.begin(), sockets_.end(), p) == sockets_.end()) continue;
+    if (auto deadline = p->next_deadline_ns(); deadline && *deadline <= now_ns) p->on_deadline(now_ns);
+  }
+}
+
 void EventLoop::iterate(int64_t max_wait_ns) {
-  int64_t now = core::monotonic_ns();
+  int64_t now = clock_.now_ns();
   int64_t wait_ns = max_wait_ns;
   for (const auto& [id, timer] : timers_) wait_ns = std::min(wait_ns, timer.next_ns - now);
   for (Pollable* p : sockets_)
@@ -125,9 +137,8 @@ void EventLoop::iterate(int64_t max_wait_ns) {
   for (size_t i = 0; i < readers_.size() && !stop_.load() && !items_dirty_; ++i)
     if (items[i + 1].revents & ZMQ_POLLIN) readers_[i]->drain(256);
   if (stop_.load()) return;
-  now = core::monotonic_ns();
-  for (size_t i = 0; i < sockets_.size() && !items_dirty_; ++i)
-    if (auto deadline = sockets_[i]->next_deadline_ns(); deadline && *deadline <= now) sockets_[i]->on_deadline(now);
+  now = clock_.now_ns();
+  run_deadlines(now);
   run_timers(now);
 }
 
@@ -145,6 +156,65 @@ bool EventLoop::run_until(const std::function<bool()>& done, std::chrono::millis
     iterate(std::min<int64_t>(left, 10'000'000));
   }
   return done();
+}
+
+// ---- lockstep ------------------------------------------------------------------------------
+
+void EventLoop::enter_lockstep() { clock_.make_virtual(0); }
+
+size_t EventLoop::collect() {
+  size_t taken = 0;
+  v1::Header header;
+  for (size_t i = 0; i < sockets_.size(); ++i) {
+    zmq::socket_t* socket = sockets_[i]->input_socket();
+    if (socket == nullptr) continue;
+    const int at = sockets_[i]->header_frame();
+    Held held{i, {}, sockets_[i], {}};
+    while (detail::receive_frames(*socket, held.frames, "lockstep")) {
+      if (at >= 0 && static_cast<size_t>(at) < held.frames.size() &&
+          header.ParseFromArray(held.frames[at].data(), static_cast<int>(held.frames[at].size())))
+        held.sender = header.robot_id() + "/" + header.service();
+      held_.push_back(std::move(held));
+      held = Held{i, {}, sockets_[i], {}};
+      ++taken;
+    }
+  }
+  return taken;
+}
+
+void EventLoop::discard_collected() { held_.clear(); }
+
+void EventLoop::dispatch(int64_t now_ns, bool run_due) {
+  clock_.set(now_ns);
+  // Bring every socket's ZeroMQ state up to date (subscriptions, pipe capacity): all reads of
+  // this step happened in collect(), so what a send sees no longer depends on thread timing.
+  for (Pollable* p : sockets_)
+    if (zmq::socket_t* s = p->socket()) (void)s->get(zmq::sockopt::events);
+  // Stable: one sender's messages keep the order ZeroMQ delivered them in (its sending order).
+  std::stable_sort(held_.begin(), held_.end(), [](const Held& a, const Held& b) {
+    return a.socket_index != b.socket_index ? a.socket_index < b.socket_index : a.sender < b.sender;
+  });
+  std::vector<Held> batch;
+  batch.swap(held_);
+  for (Held& h : batch) {
+    if (stop_.load()) return;
+    // A callback may have removed the socket since collect().
+    if (std::find(sockets_.begin(), sockets_.end(), h.socket) == sockets_.end()) continue;
+    h.socket->handle(h.frames);
+  }
+  run_posted();
+  if (!run_due || stop_.load()) return;
+  run_deadlines(now_ns);
+  run_timers(now_ns);
+}
+
+std::optional<int64_t> EventLoop::next_due_ns() const {
+  std::optional<int64_t> next;
+  for (const auto& [id, timer] : timers_)
+    if (!next || timer.next_ns < *next) next = timer.next_ns;
+  for (const Pollable* p : sockets_)
+    if (auto deadline = p->next_deadline_ns(); deadline && (!next || *deadline < *next)) next = deadline;
+  return next;
 }
 
 }  // namespace hexplore::transport

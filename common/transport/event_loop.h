@@ -2,17 +2,25 @@
 // A single-threaded poll loop: serves several sockets (subscribers, responders, requesters),
 // periodic timers and socket deadlines (delayed sends, request time-outs) with zmq::poll.
 // stop() and post() may be called from any thread; stop() also from a signal handler.
+//
+// Lockstep (the reproducible fast mode): instead of run(), a driver (service::ServiceHost)
+// calls collect() and dispatch() on every loop of a process in turn, on a virtual clock. The
+// messages of one step are then handled in an order that does not depend on thread timing:
+// by socket in registration order, then by sender, each sender's messages in sending order.
 
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
+#include <string>
 #include <mutex>
 #include <vector>
 
 #include <zmq.h>
 
+#include "common/transport/loop_clock.h"
 #include "common/transport/pollable.h"
 
 namespace hexplore::transport {
@@ -50,6 +58,22 @@ class EventLoop {
   // Clears a previous stop() so the loop can run again.
   void reset();
 
+  // The time timers and deadlines run on (monotonic, or virtual in lockstep). Loop thread only.
+  int64_t now_ns() const { return clock_.now_ns(); }
+  bool in_lockstep() const { return clock_.is_virtual(); }
+
+  // Lockstep, loop thread only. enter_lockstep() makes the clock virtual at 0 (call before
+  // timers are added). collect() takes every waiting message off every input socket without
+  // handling it and returns how many; discard_collected() forgets them. dispatch() sets the
+  // clock to `now_ns`, handles what collect() took, runs posted functions and, with
+  // `run_due`, the deadlines and timers due by then. next_due_ns(): the earliest timer or
+  // deadline still to come.
+  void enter_lockstep();
+  size_t collect();
+  void discard_collected();
+  void dispatch(int64_t now_ns, bool run_due);
+  std::optional<int64_t> next_due_ns() const;
+
  private:
   struct Timer {
     std::chrono::nanoseconds period;
@@ -60,6 +84,15 @@ class EventLoop {
   void iterate(int64_t max_wait_ns);
   void run_posted();
   void run_timers(int64_t now_ns);
+  void run_deadlines(int64_t now_ns);
+
+  // A message taken off a socket by collect(), waiting for dispatch().
+  struct Held {
+    size_t socket_index;  // position in sockets_ at collect time
+    std::string sender;   // "robot/service" from the Header; "" when unreadable
+    Pollable* socket;
+    std::vector<zmq::message_t> frames;
+  };
 
   std::vector<Pollable*> sockets_;
   // Poll set rebuilt only when sockets are added or removed: [wake fd, input sockets...].
@@ -72,6 +105,8 @@ class EventLoop {
   int wake_fd_;  // eventfd: stop() and post() wake a blocked poll
   std::mutex posted_mutex_;
   std::vector<std::function<void()>> posted_;
+  LoopClock clock_;
+  std::vector<Held> held_;
 };
 
 }  // namespace hexplore::transport

@@ -66,7 +66,7 @@ bool Publisher::publish_message(std::string_view topic, std::string_view payload
   zmq::message_t payload(payload_size);
   if (payload_size > 0) message.SerializeWithCachedSizesToArray(static_cast<uint8_t*>(payload.data()));
   if (faulty && options_.faults.delay.count() > 0) {
-    delayed_.push_back(Delayed{core::monotonic_ns() + options_.faults.delay.count(), std::string(topic),
+    delayed_.push_back(Delayed{now_ns() + options_.faults.delay.count(), std::string(topic),
                                std::move(header), std::move(payload)});
     return true;
   }

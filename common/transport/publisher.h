@@ -58,9 +58,12 @@ class Publisher : public Pollable {
 
   // Pollable: delayed messages are sent by the loop when due.
   zmq::socket_t* input_socket() override { return nullptr; }
-  size_t drain(size_t) override { return 0; }
+  zmq::socket_t* socket() override { return &socket_; }
   std::optional<int64_t> next_deadline_ns() const override;
   void on_deadline(int64_t now_ns) override;
+
+ protected:
+  const char* role() const override { return "publisher"; }
 
  private:
   struct Delayed {

@@ -66,52 +66,45 @@ void Responder::reply(zmq::message_t& routing_id, const v1::Header& request, std
     accounting_->record_sent(request_topic(reply_type.empty() ? "unserved" : reply_type), request.robot_id(), bytes);
 }
 
-size_t Responder::drain(size_t max) {
-  size_t taken = 0;
-  std::vector<zmq::message_t> frames;
+void Responder::handle(std::vector<zmq::message_t>& frames) {
   v1::Header header;
-  while (taken < max) {
-    if (!detail::receive_frames(socket_, frames, "responder")) break;
-    ++taken;
-    // [routing id][empty][Header][payload]
-    if (frames.size() != 4 || frames[1].size() != 0) {
-      drop(accounting_, "request/invalid", DropReason::kMalformed,
-           "request with " + std::to_string(frames.size()) + " frames, expected [id][empty][header][payload]");
-      continue;
-    }
-    if (auto reason = check_envelope(frames[2], frames[3], options_.max_message_bytes, header)) {
-      drop(accounting_, "request/invalid", *reason, "request rejected: " + std::string(drop_reason_name(*reason)));
-      continue;
-    }
-    const std::string topic = request_topic(header.payload_type());
-    auto it = handlers_.find(header.payload_type());
-    if (it == handlers_.end()) {
-      drop(accounting_, "request/unserved", DropReason::kWrongType,
-           "no handler for request type '" + header.payload_type().substr(0, 80) + "'");
-      reply(frames[0], header, "", zmq::message_t());
-      continue;
-    }
-    if (accounting_)
-      accounting_->record_received(topic, header.robot_id(), total_size(frames) - frames[0].size(),
-                                   core::wall_time_ns() - header.send_time_ns());
-    zmq::message_t reply_payload;
-    bool parsed = false;
-    try {
-      parsed = it->second.handle(header, frames[3].data(), frames[3].size(), reply_payload);
-    } catch (const std::exception& e) {
-      core::log_once(core::LogLevel::kError, "transport", "handler-threw:" + header.payload_type(),
-                     "handler for " + header.payload_type() + " threw: " + e.what());
-      reply(frames[0], header, "", zmq::message_t());
-      continue;
-    }
-    if (!parsed) {
-      drop(accounting_, topic, DropReason::kMalformed, "request payload does not parse as " + header.payload_type());
-      reply(frames[0], header, "", zmq::message_t());
-      continue;
-    }
-    reply(frames[0], header, it->second.reply_type, std::move(reply_payload));
+  // [routing id][empty][Header][payload]
+  if (frames.size() != 4 || frames[1].size() != 0) {
+    drop(accounting_, "request/invalid", DropReason::kMalformed,
+         "request with " + std::to_string(frames.size()) + " frames, expected [id][empty][header][payload]");
+    return;
   }
-  return taken;
+  if (auto reason = check_envelope(frames[2], frames[3], options_.max_message_bytes, header)) {
+    drop(accounting_, "request/invalid", *reason, "request rejected: " + std::string(drop_reason_name(*reason)));
+    return;
+  }
+  const std::string topic = request_topic(header.payload_type());
+  auto it = handlers_.find(header.payload_type());
+  if (it == handlers_.end()) {
+    drop(accounting_, "request/unserved", DropReason::kWrongType,
+         "no handler for request type '" + header.payload_type().substr(0, 80) + "'");
+    reply(frames[0], header, "", zmq::message_t());
+    return;
+  }
+  if (accounting_)
+    accounting_->record_received(topic, header.robot_id(), total_size(frames) - frames[0].size(),
+                                 core::wall_time_ns() - header.send_time_ns());
+  zmq::message_t reply_payload;
+  bool parsed = false;
+  try {
+    parsed = it->second.handle(header, frames[3].data(), frames[3].size(), reply_payload);
+  } catch (const std::exception& e) {
+    core::log_once(core::LogLevel::kError, "transport", "handler-threw:" + header.payload_type(),
+                   "handler for " + header.payload_type() + " threw: " + e.what());
+    reply(frames[0], header, "", zmq::message_t());
+    return;
+  }
+  if (!parsed) {
+    drop(accounting_, topic, DropReason::kMalformed, "request payload does not parse as " + header.payload_type());
+    reply(frames[0], header, "", zmq::message_t());
+    return;
+  }
+  reply(frames[0], header, it->second.reply_type, std::move(reply_payload));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -161,60 +154,53 @@ void Requester::send_request(std::string_view request_type, const google::protob
     return;
   }
   if (accounting_) accounting_->record_sent(topic, peer_, bytes);
-  pending_.emplace(sequence, Pending{core::monotonic_ns() + std::chrono::nanoseconds(timeout).count(),
+  pending_.emplace(sequence, Pending{now_ns() + std::chrono::nanoseconds(timeout).count(),
                                      std::string(reply_type), std::move(complete)});
 }
 
-size_t Requester::drain(size_t max) {
-  size_t taken = 0;
-  std::vector<zmq::message_t> frames;
+void Requester::handle(std::vector<zmq::message_t>& frames) {
   v1::Header header;
-  while (taken < max) {
-    if (!detail::receive_frames(socket_, frames, "requester")) break;
-    ++taken;
-    if (frames.size() != 3 || frames[0].size() != 0) {
-      drop(accounting_, "request/invalid", DropReason::kMalformed, "reply with wrong frame layout");
-      continue;
-    }
-    auto reason = check_envelope(frames[1], frames[2], options_.max_message_bytes, header);
-    if (reason && *reason != DropReason::kMalformed) {
-      drop(accounting_, "request/invalid", *reason, "reply rejected: " + std::string(drop_reason_name(*reason)));
-      continue;
-    }
-    if (reason && header.payload_type().empty() && header.sequence() != 0) {
-      // An empty payload_type is the responder's "not served" answer.
-      auto it = pending_.find(header.sequence());
-      if (it != pending_.end()) {
-        Complete complete = std::move(it->second.complete);
-        pending_.erase(it);
-        complete(nullptr, nullptr, 0);
-      }
-      continue;
-    }
-    if (reason) {
-      drop(accounting_, "request/invalid", *reason, "reply with unparsable header");
-      continue;
-    }
+  if (frames.size() != 3 || frames[0].size() != 0) {
+    drop(accounting_, "request/invalid", DropReason::kMalformed, "reply with wrong frame layout");
+    return;
+  }
+  auto reason = check_envelope(frames[1], frames[2], options_.max_message_bytes, header);
+  if (reason && *reason != DropReason::kMalformed) {
+    drop(accounting_, "request/invalid", *reason, "reply rejected: " + std::string(drop_reason_name(*reason)));
+    return;
+  }
+  if (reason && header.payload_type().empty() && header.sequence() != 0) {
+    // An empty payload_type is the responder's "not served" answer.
     auto it = pending_.find(header.sequence());
-    if (it == pending_.end()) continue;  // late reply to a request that already timed out
-    const std::string topic = request_topic(header.payload_type());
-    if (header.payload_type() != it->second.reply_type) {
-      drop(accounting_, topic, DropReason::kWrongType, "reply of type '" + header.payload_type().substr(0, 80) +
-                                                           "' instead of " + it->second.reply_type);
+    if (it != pending_.end()) {
       Complete complete = std::move(it->second.complete);
       pending_.erase(it);
       complete(nullptr, nullptr, 0);
-      continue;
     }
-    if (accounting_)
-      accounting_->record_received(topic, header.robot_id(), frames[1].size() + frames[2].size(),
-                                   core::wall_time_ns() - header.send_time_ns());
+    return;
+  }
+  if (reason) {
+    drop(accounting_, "request/invalid", *reason, "reply with unparsable header");
+    return;
+  }
+  auto it = pending_.find(header.sequence());
+  if (it == pending_.end()) return;  // late reply to a request that already timed out
+  const std::string topic = request_topic(header.payload_type());
+  if (header.payload_type() != it->second.reply_type) {
+    drop(accounting_, topic, DropReason::kWrongType, "reply of type '" + header.payload_type().substr(0, 80) +
+                                                         "' instead of " + it->second.reply_type);
     Complete complete = std::move(it->second.complete);
     pending_.erase(it);
-    if (!complete(&header, frames[2].data(), frames[2].size()))
-      drop(accounting_, topic, DropReason::kMalformed, "reply payload does not parse as " + header.payload_type());
+    complete(nullptr, nullptr, 0);
+    return;
   }
-  return taken;
+  if (accounting_)
+    accounting_->record_received(topic, header.robot_id(), frames[1].size() + frames[2].size(),
+                                 core::wall_time_ns() - header.send_time_ns());
+  Complete complete = std::move(it->second.complete);
+  pending_.erase(it);
+  if (!complete(&header, frames[2].data(), frames[2].size()))
+    drop(accounting_, topic, DropReason::kMalformed, "reply payload does not parse as " + header.payload_type());
 }
 
 std::optional<int64_t> Requester::next_deadline_ns() const {
@@ -239,9 +225,9 @@ void Requester::on_deadline(int64_t now_ns) {
 }
 
 void Requester::wait_until(const std::function<bool()>& done, std::chrono::milliseconds timeout) {
-  const int64_t end_ns = core::monotonic_ns() + std::chrono::nanoseconds(timeout).count();
+  const int64_t end_ns = now_ns() + std::chrono::nanoseconds(timeout).count();
   while (!done()) {
-    const int64_t now = core::monotonic_ns();
+    const int64_t now = now_ns();
     on_deadline(now);
     if (done() || now >= end_ns) break;
     int64_t wait_ns = end_ns - now;

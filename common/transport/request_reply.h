@@ -52,7 +52,11 @@ class Responder : public Pollable {
   const std::string& endpoint() const { return endpoint_; }
 
   zmq::socket_t* input_socket() override { return &socket_; }
-  size_t drain(size_t max) override;
+  void handle(std::vector<zmq::message_t>& frames) override;
+  int header_frame() const override { return 2; }
+
+ protected:
+  const char* role() const override { return "responder"; }
 
  private:
   using Handle = std::function<bool(const v1::Header&, const void*, size_t, zmq::message_t&)>;
@@ -124,9 +128,13 @@ class Requester : public Pollable {
   size_t pending() const { return pending_.size(); }
 
   zmq::socket_t* input_socket() override { return &socket_; }
-  size_t drain(size_t max) override;
+  void handle(std::vector<zmq::message_t>& frames) override;
+  int header_frame() const override { return 1; }
   std::optional<int64_t> next_deadline_ns() const override;
   void on_deadline(int64_t now_ns) override;
+
+ protected:
+  const char* role() const override { return "requester"; }
 
  private:
   // header == nullptr: failed (time-out or not served). Returns false when the reply was unparsable.

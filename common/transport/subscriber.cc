@@ -18,7 +18,6 @@ struct Subscriber::State {
   Accounting* accounting;
   zmq::socket_t socket;
   std::vector<Handler> handlers;
-  std::vector<zmq::message_t> frames;  // reused between receives
   v1::Header header;
 };
 
@@ -111,17 +110,6 @@ void Subscriber::handle(std::vector<zmq::message_t>& frames) {
     const size_t bytes = frames[0].size() + frames[1].size() + frames[2].size();
     s.accounting->record_received(topic, s.header.robot_id(), bytes, received_ns - s.header.send_time_ns());
   }
-}
-
-size_t Subscriber::drain(size_t max) {
-  State& s = *state_;
-  size_t taken = 0;
-  while (taken < max) {
-    if (!detail::receive_frames(s.socket, s.frames, "subscriber")) break;
-    ++taken;
-    handle(s.frames);
-  }
-  return taken;
 }
 
 bool Subscriber::receive_one(std::chrono::milliseconds timeout) {

@@ -62,13 +62,16 @@ class Subscriber : public Pollable {
   bool receive_one(std::chrono::milliseconds timeout);
 
   zmq::socket_t* input_socket() override;
-  size_t drain(size_t max) override;
+  void handle(std::vector<zmq::message_t>& frames) override;
+  int header_frame() const override { return 1; }
+
+ protected:
+  const char* role() const override { return "subscriber"; }
 
  private:
   // Parses the payload into the handler's type and calls it; false when parsing failed.
   using Dispatch = std::function<bool(std::string_view, const v1::Header&, const void*, size_t)>;
   void add_handler(std::string prefix, const std::string& type, Dispatch dispatch);
-  void handle(std::vector<zmq::message_t>& frames);
 
   struct Handler {
     std::string prefix;

@@ -24,7 +24,7 @@ class Stopwatch {
 
 }  // namespace
 
-double HlmapService::now_s() const { return core::ns_to_s(core::monotonic_ns()); }
+double HlmapService::now_s() const { return core::ns_to_s(context_->now_ns()); }
 
 void HlmapService::setup(service::ServiceContext& context) {
   context_ = &context;

@@ -201,7 +201,7 @@ void MappingService::on_scan(const std::string& sender, const v1::ScanFrame& fra
   jump_streak_ = 0;
 
   std::vector<perception::OrientedBox> bodies;
-  const int64_t now = core::monotonic_ns();
+  const int64_t now = context_->now_ns();
   for (const auto& [id, mate] : teammates_) {
     if (core::ns_to_s(now - mate.received_ns) <= options_.teammate_timeout_s) bodies.push_back(mate.box);
   }
@@ -241,7 +241,7 @@ void MappingService::on_team_pose(const std::string& sender, const v1::RobotPose
     box.half_extents_m = species->body_half_extents_m;
   }
   if (!box.centre.allFinite() || !box.half_extents_m.allFinite()) return;
-  teammates_[sender] = Teammate{box, core::monotonic_ns()};
+  teammates_[sender] = Teammate{box, context_->now_ns()};
 }
 
 void MappingService::publish_delta(const v1::VoxelDelta& delta) {

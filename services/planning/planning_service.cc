@@ -45,12 +45,19 @@ void PlanningService::setup(service::ServiceContext& context) {
   speed_mps_ = species->speed_mps;
   capabilities_ = planning::capabilities_from(team);
   options_ = planning::PlannerOptions::from(team.params);
+  // A wall-clock budget would make the assignment depend on machine load; in lockstep only
+  // the generation budget bounds the GA.
+  if (context.lockstep()) options_.ga_time_budget_s = 0.0;
   options_.region = team.exploration_region;
   eta_t_s_ = team.params.eta_t_s;
-  map_ = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team));
+  // Paths keep the bodies clear of the obstacles the map knows (common/highlevel/clearance.h).
+  highlevel::ClearanceOptions clearance;
+  clearance.body_radius_m = highlevel::body_radii(team);
+  clearance.facade_half_extent_m = 0.5 * team.params.eta_s_m;
+  map_ = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team), clearance);
   for (const auto& r : team.robots) {
     positions_[r.id] = r.start_position_m;
-    heard_ns_[r.id] = core::monotonic_ns();  // a teammate gets peer_timeout_s to show up
+    heard_ns_[r.id] = context.now_ns();  // a teammate gets peer_timeout_s to show up
   }
 
   const auto& args = context.arguments();
@@ -116,7 +123,7 @@ void PlanningService::setup(service::ServiceContext& context) {
     const std::string& id = r.header.robot_id();
     if (!context_->team().find_robot(id)) return;
     positions_[id] = position_of(r.message);
-    heard_ns_[id] = core::monotonic_ns();
+    heard_ns_[id] = context_->now_ns();
     if (id == robot_id_) return;
     // A teammate that stops moving and goes idle has finished its route.
     const int state = r.message.state();
@@ -227,7 +234,7 @@ void PlanningService::on_mission(const v1::MissionCommand& command) {
 std::vector<planning::RobotState> PlanningService::team_states(int& self) const {
   std::vector<planning::RobotState> out;
   const auto& team = context_->team();
-  const int64_t now = core::monotonic_ns();
+  const int64_t now = context_->now_ns();
   self = 0;
   for (const auto& r : team.robots) {
     const bool me = r.id == robot_id_;
@@ -296,7 +303,7 @@ bool PlanningService::publish_path() {
   return false;
 }
 
-int64_t PlanningService::now_ns() const { return sim_time_ns_ > 0 ? sim_time_ns_ : core::monotonic_ns(); }
+int64_t PlanningService::now_ns() const { return sim_time_ns_ > 0 ? sim_time_ns_ : context_->now_ns(); }
 
 void PlanningService::check_progress() {
   const int64_t now = now_ns();
@@ -363,7 +370,7 @@ void PlanningService::cycle() {
 
 double PlanningService::since_last_plan_s() const {
   if (sim_time_ns_ > 0 && last_plan_sim_ns_ > 0) return core::ns_to_s(sim_time_ns_ - last_plan_sim_ns_);
-  return core::ns_to_s(core::monotonic_ns() - last_plan_ns_);
+  return core::ns_to_s(context_->now_ns() - last_plan_ns_);
 }
 
 void PlanningService::replan(const std::string& reason) {
@@ -374,7 +381,7 @@ void PlanningService::replan(const std::string& reason) {
   req.ignored = ignored_;
   for (const auto& [source, s] : shared_) req.shared.push_back(s);
   peer_finished_ = false;
-  last_plan_ns_ = core::monotonic_ns();
+  last_plan_ns_ = context_->now_ns();
   last_plan_sim_ns_ = sim_time_ns_;
   planning::PlanResult res;
   try {

@@ -63,7 +63,7 @@ class PlanningService : public service::Service {
   void advance_route();
   // Skips the current view when the robot is blocked or makes no progress towards it.
   void check_progress();
-  int64_t now_ns() const;  // sim time when the driver stamps it, else monotonic time
+  int64_t now_ns() const;  // sim time when the driver stamps it, else the loop's clock
   // Publishes the path to the next reachable route view; skips (and counts an attempt for)
   // views without a path. False when no view of the route is left.
   bool publish_path();
@@ -89,7 +89,7 @@ class PlanningService : public service::Service {
   std::map<std::string, planning::ReferenceSolution> shared_;  // source robot -> solution
   bool peer_finished_ = false;                        // a teammate went idle (route done)
   std::map<std::string, int> peer_motion_;            // robot id -> last v1::MotionState
-  std::map<std::string, int64_t> heard_ns_;           // robot id -> monotonic time of its last pose
+  std::map<std::string, int64_t> heard_ns_;           // robot id -> loop-clock time of its last pose
   std::map<std::string, Eigen::Vector3d> peer_anchor_;  // robot id -> where it last moved 0.5 m from
   std::map<std::string, int64_t> peer_moved_ns_;      // robot id -> now_ns() when it got there
   std::unordered_map<uint64_t, int> attempts_;        // ISE supervoxel -> visits of a view for it

@@ -99,7 +99,7 @@ void SafetyService::setup(service::ServiceContext& context) {
     if (id == robot_id_ || id.empty()) return;
     Peer& peer = peers_[id];
     peer.pose = r.message;
-    peer.pose_ns = core::monotonic_ns();
+    peer.pose_ns = context_->now_ns();
     peer.pose_sim_ns = r.header.sim_time_ns();
   });
   sub.on<v1::PathFragment>(std::string(topics::kTeamPath), [this](const transport::Received<v1::PathFragment>& r) {
@@ -107,7 +107,7 @@ void SafetyService::setup(service::ServiceContext& context) {
     if (id == robot_id_ || id.empty()) return;
     Peer& peer = peers_[id];
     peer.fragment = from_proto(r.message, id);
-    peer.fragment_ns = core::monotonic_ns();
+    peer.fragment_ns = context_->now_ns();
     peer.fragment_sim_ns = r.header.sim_time_ns();
   });
   sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
@@ -129,7 +129,7 @@ void SafetyService::on_shutdown(service::ServiceContext&) {
 
 double SafetyService::now_s() const {
   // Sim time when the driver provides it (so timeouts scale with a faster-than-real-time sim).
-  return sim_time_ns_ > 0 ? core::ns_to_s(sim_time_ns_) : core::ns_to_s(core::monotonic_ns());
+  return sim_time_ns_ > 0 ? core::ns_to_s(sim_time_ns_) : core::ns_to_s(context_->now_ns());
 }
 
 void SafetyService::on_pose(const v1::RobotPose& pose, int64_t sim_time_ns) {
@@ -192,7 +192,7 @@ void SafetyService::halt(const std::string& reason) {
 bool SafetyService::stale(int64_t received_ns, int64_t sent_sim_ns) const {
   // Sim time when both sides have it (a fast sim ages messages faster than the wall clock).
   if (sim_time_ns_ > 0 && sent_sim_ns > 0) return sim_time_ns_ - sent_sim_ns > core::s_to_ns(peer_timeout_s_);
-  return core::monotonic_ns() - received_ns > core::s_to_ns(peer_timeout_s_);
+  return context_->now_ns() - received_ns > core::s_to_ns(peer_timeout_s_);
 }
 
 std::vector<Fragment> SafetyService::live_peers() const {

@@ -39,7 +39,7 @@ class SafetyService : public service::Service {
   enum class Mission { kActive, kStopped, kEmergency };
   struct Peer {
     std::optional<Fragment> fragment;
-    int64_t fragment_ns = 0;          // monotonic receive time
+    int64_t fragment_ns = 0;          // receive time, loop clock
     int64_t fragment_sim_ns = 0;      // sim time stamped by the sender (0 = none)
     std::optional<v1::RobotPose> pose;
     int64_t pose_ns = 0;

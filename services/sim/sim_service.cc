@@ -165,13 +165,17 @@ void SimService::setup(service::ServiceContext& context) {
   sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
                              [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
 
-  const auto wall = std::chrono::nanoseconds(std::max<int64_t>(clock_.wall_period_ns(step_ns_), 1'000'000));
-  context.loop().add_timer(wall, [this] { tick(); });
+  // In lockstep the loop's clock is sim time itself: one step per step period, as fast as the
+  // team can go; otherwise the real-time factor turns a sim step into a wall-clock period.
+  const auto period = std::chrono::nanoseconds(
+      context.lockstep() ? step_ns_ : std::max<int64_t>(clock_.wall_period_ns(step_ns_), 1'000'000));
+  context.loop().add_timer(period, [this] { tick(); });
   const Eigen::Vector3d at = motion_->ground_position();
   char where[96];
   std::snprintf(where, sizeof(where), "(%.2f, %.2f, %.2f)", at.x(), at.y(), at.z());
   core::LogLine(core::LogLevel::kInfo, "sim") << robot_id_ << ": " << scene_.name << " (" << scene_.mesh.triangle_count()
-                                              << " triangles), " << species->name << " at " << where << ", rtf " << rtf;
+                                              << " triangles), " << species->name << " at " << where
+                                              << (context.lockstep() ? std::string(", lockstep") : ", rtf " + std::to_string(rtf));
   context.set_state(v1::SERVICE_STATE_RUNNING, to_string(motion_->state()));
   update_gauges();
   publish_pose();
@@ -230,12 +234,12 @@ void SimService::on_team_pose(const std::string& sender, const v1::RobotPose& po
     half = species ? species->body_half_extents_m : Eigen::Vector3d(0.5, 0.35, 0.4);
   }
   t.box.half_extents = half;
-  t.received_ns = core::monotonic_ns();
+  t.received_ns = context_->now_ns();
 }
 
 std::vector<ProxyBox> SimService::live_teammates() const {
   std::vector<ProxyBox> out;
-  const int64_t now = core::monotonic_ns();
+  const int64_t now = context_->now_ns();
   for (const auto& [id, t] : teammates_)
     if (now - t.received_ns < kTeammateTimeoutNs) out.push_back(t.box);
   return out;

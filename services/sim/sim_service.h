@@ -43,7 +43,7 @@ class SimService : public service::Service {
  private:
   struct Teammate {
     ProxyBox box;
-    int64_t received_ns = 0;  // monotonic
+    int64_t received_ns = 0;  // on the loop's clock
   };
   struct Sensor {
     std::unique_ptr<LidarModel> model;

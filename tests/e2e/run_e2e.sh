@@ -4,7 +4,9 @@
 # folder's summary.json must show the stated completeness and no collision.
 #   run_e2e.sh CASE LAUNCHER STATION WORKDIR BASE_PORT
 # CASE: explore (plain run), switch (planner switched to no-mnss mid-run via the station's
-# --send), kill (every service of mr1000a killed mid-run; slugcat1 must finish the work).
+# --send), kill (every service of mr1000a killed mid-run; slugcat1 must finish the work),
+# lockstep (the one-process fast mode, twice, the second time with two CPU hogs beside it: the
+# trajectories, completeness and communication records must be byte-identical).
 set -euo pipefail
 case=$1 launch=$2 station=$3 work=$4 port=$5
 here=$(cd "$(dirname "$0")" && pwd)
@@ -45,7 +47,9 @@ fail() {
   exit 1
 }
 
-"$launch" --config "$work/team.yaml" --log-dir "$work/logs" \
+mode=()
+[ "$case" = lockstep ] && mode=(--compose)
+"$launch" "${mode[@]}" --config "$work/team.yaml" --log-dir "$work/logs" \
   --child-args "--results $work/results --log-level debug --real-time-factor ${E2E_RTF:-3}" > "$work/launch.log" 2>&1 &
 launcher=$!
 cleanup() { kill "$launcher" 2>/dev/null || true; }
@@ -65,7 +69,7 @@ wait_sim_time() {
 }
 
 case $case in
-  explore) ;;
+  explore | lockstep) ;;
   switch)
     wait_sim_time 20
     "$station" --config "$work/team.yaml" --send planner=no-mnss || fail "could not send the planner switch"
@@ -102,6 +106,17 @@ case $case in
   kill)
     # The survivor planned for itself alone after the loss, and went on to cover more.
     grep -q "1 live" "$work/logs/slugcat1-planning.log" || fail "slugcat1 never planned without mr1000a"
+    ;;
+  lockstep)
+    hogs=()
+    for _ in 1 2; do yes > /dev/null & hogs+=($!); done
+    "$launch" --compose --config "$work/team.yaml" --log-dir "$work/logs2" \
+      --child-args "--results $work/results2 --log-level debug" > "$work/launch2.log" 2>&1 || true
+    kill "${hogs[@]}"
+    for f in trajectories.csv completeness.csv communication.csv; do
+      cmp "$work/results/$f" "$work/results2/$f" || fail "$f differs between two lockstep runs"
+    done
+    echo "two lockstep runs (the second beside two CPU hogs) recorded identical trajectories, completeness and traffic"
     ;;
 esac
 echo "E2E PASS ($case)"
