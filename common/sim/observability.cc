@@ -31,10 +31,13 @@ uint64_t state_key(const Eigen::Vector2d& xy, double z, double grid) {
 std::optional<Footprint> traverse(const TerrainProbe& probe, const Footprint& from, const Eigen::Vector2d& to_xy) {
   const Eigen::Vector2d delta = to_xy - from.xy;
   const double yaw = std::atan2(delta.y(), delta.x());
-  auto f = probe.footprint(from.xy, yaw, from.ground_z);
+  // The turned pose must fit (slope, clearance); its sample points search from where the
+  // body's points were (support is only searched a step above them).
+  auto f = probe.footprint(from.xy, yaw, from.heights);
   if (!f) return std::nullopt;
   const TerrainVerdict turn = probe.check(*f, nullptr);
-  if (turn == TerrainVerdict::kSlope || turn == TerrainVerdict::kClearance) return std::nullopt;
+  if (turn == TerrainVerdict::kSlope || turn == TerrainVerdict::kClearance || turn == TerrainVerdict::kStep)
+    return std::nullopt;
   const int steps = std::max(1, static_cast<int>(std::ceil(delta.norm() / kSubstepM)));
   for (int s = 1; s <= steps; ++s) {
     const auto next = probe.footprint(from.xy + delta * (static_cast<double>(s) / steps), yaw, f->heights);

@@ -10,6 +10,9 @@ namespace {
 
 constexpr double kMaxSubstepM = 0.05;   // small enough that a climbable slope never reads as a step
 constexpr double kWaypointReachedM = 1e-3;
+// How far back a body may retrace its own poses to find room to turn: 40 moves of up to
+// kMaxSubstepM, or turns.
+constexpr size_t kTrailPoses = 40;
 
 double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
@@ -37,7 +40,7 @@ RobotMotion::RobotMotion(const RayCaster& caster, const core::SpeciesConfig& spe
   const auto f = probe_.footprint(start.head<2>(), yaw_rad, start.z());
   if (!f) throw SceneError(where(), "no ground under the robot's footprint");
   const TerrainVerdict v = probe_.check(*f, nullptr);
-  if (v == TerrainVerdict::kSlope || v == TerrainVerdict::kClearance)
+  if (v == TerrainVerdict::kSlope || v == TerrainVerdict::kClearance || v == TerrainVerdict::kStep)
     throw SceneError(where(), std::string("the robot cannot stand there: ") + to_string(v));
   footprint_ = *f;
 }
@@ -62,6 +65,7 @@ void RobotMotion::follow(std::vector<Eigen::Vector3d> waypoints, double speed_mp
   next_ = 0;
   speed_mps_ = speed_mps > 0 ? std::min(speed_mps, species().speed_mps) : species().speed_mps;
   block_reason_ = TerrainVerdict::kOk;
+  reversing_ = false;
   state_ = path_.empty() ? MotionState::kIdle : MotionState::kMoving;
 }
 
@@ -82,8 +86,14 @@ void RobotMotion::release() {
   if (state_ == MotionState::kEmergencyStop) state_ = MotionState::kIdle;
 }
 
+void RobotMotion::remember(const Footprint& f) {
+  trail_.push_back(f);
+  if (trail_.size() > kTrailPoses) trail_.pop_front();
+}
+
 void RobotMotion::block(TerrainVerdict why) {
   block_reason_ = why;
+  reversing_ = false;
   state_ = MotionState::kBlocked;
   path_.clear();
   next_ = 0;
@@ -101,24 +111,44 @@ void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
     const double dist = delta.norm();
     if (dist < kWaypointReachedM) {
       ++next_;
+      reversing_ = false;
       continue;
     }
-    const double yaw = std::atan2(delta.y(), delta.x());
+    // Face the waypoint (turning in place), or, when the body cannot turn that far where it
+    // stands, put its back to the waypoint and reverse there; kept until the waypoint.
+    const double heading = std::atan2(delta.y(), delta.x());
+    const double yaw = reversing_ ? wrap(heading + M_PI) : heading;
     if (std::abs(wrap(yaw - footprint_.yaw)) > 1e-6) {
-      // Turn in place: the turned body must fit (slope, clearance), not step anywhere.
-      const auto turned = probe_.footprint(footprint_.xy, yaw, footprint_.ground_z);
-      if (!turned) return block(TerrainVerdict::kNoGround);
-      const TerrainVerdict v = probe_.check(*turned, nullptr);
-      if (v == TerrainVerdict::kSlope || v == TerrainVerdict::kClearance) return block(v);
+      TerrainVerdict why = TerrainVerdict::kOk;
+      auto turned = probe_.turn(footprint_, yaw, &why);
+      if (!turned && !reversing_) {
+        turned = probe_.turn(footprint_, wrap(heading + M_PI));
+        reversing_ = turned.has_value();
+      }
+      if (!turned && !trail_.empty()) {
+        // No room to turn here: back up one pose the way we came (each was reached by a
+        // checked move or turn, so undoing it is free too) and try again from there.
+        const Footprint back = trail_.back();
+        trail_.pop_back();
+        const double step = (back.xy - footprint_.xy).norm();
+        const Eigen::Vector3d a = ground_position();
+        footprint_ = back;
+        odometry_m_ += (ground_position() - a).norm();
+        budget -= step;
+        continue;
+      }
+      if (!turned) return block(why);
+      if (std::abs(wrap(turned->yaw - footprint_.yaw)) > 1e-3) remember(footprint_);
       footprint_ = *turned;
     }
     const double move = std::min({budget, dist, kMaxSubstepM});
     const Eigen::Vector2d xy = footprint_.xy + move * delta / dist;
-    const auto next = probe_.footprint(xy, yaw, footprint_.heights);
+    const auto next = probe_.footprint(xy, footprint_.yaw, footprint_.heights);
     if (!next) return block(TerrainVerdict::kNoGround);
-    const TerrainVerdict v = probe_.check(*next, &footprint_);
+    const TerrainVerdict v = probe_.check(*next, &footprint_, reversing_ ? Travel::kBackward : Travel::kForward);
     if (v != TerrainVerdict::kOk) return block(v);
     const Eigen::Vector3d a = ground_position();
+    remember(footprint_);
     footprint_ = *next;
     odometry_m_ += (ground_position() - a).norm();
     budget -= move;

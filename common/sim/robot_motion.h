@@ -1,10 +1,13 @@
 #pragma once
 // One simulated robot body: follows a commanded waypoint path at its species' speed with
-// its pose projected onto the ground truth, stops with BLOCKED when the terrain ahead
-// exceeds the species' limits, and counts contacts with teammates' bodies. Advanced by
+// its pose projected onto the ground truth, turning in place towards each waypoint or, where
+// its body cannot turn, reversing to it, or first backing up the way it came (its last poses)
+// until it can turn; stops with BLOCKED when the terrain in the way exceeds the species'
+// limits, and counts contacts with teammates' bodies. Advanced by
 // step(dt) only, so a lockstep driver reproduces a run exactly.
 
 #include <cstdint>
+#include <deque>
 #include <set>
 #include <span>
 #include <vector>
@@ -30,7 +33,8 @@ class RobotMotion {
               double yaw_rad, uint32_t id = 0);
 
   // Follow the waypoints (their x, y; the terrain sets z) at min(speed, species speed);
-  // speed <= 0 means the species speed. Ignored during an emergency stop.
+  // speed <= 0 means the species speed. Ignored during an emergency stop. A waypoint the
+  // body cannot turn to face is driven to in reverse (e.g. backing out of a dead end).
   void follow(std::vector<Eigen::Vector3d> waypoints, double speed_mps = 0.0);
   void stop();            // halt, keep nothing of the path
   void emergency_stop();  // halt; follow() is ignored until release()
@@ -48,11 +52,13 @@ class RobotMotion {
   double odometry_m() const { return odometry_m_; }
   uint32_t collisions() const { return collisions_; }
   size_t waypoints_left() const { return path_.size() - next_; }
+  bool reversing() const { return reversing_; }
   ProxyBox body_box() const;
   const core::SpeciesConfig& species() const { return probe_.species(); }
 
  private:
   void block(TerrainVerdict why);
+  void remember(const Footprint& f);
 
   TerrainProbe probe_;
   uint32_t id_;
@@ -61,6 +67,8 @@ class RobotMotion {
   TerrainVerdict block_reason_ = TerrainVerdict::kOk;
   std::vector<Eigen::Vector3d> path_;
   size_t next_ = 0;
+  bool reversing_ = false;  // driving backwards to path_[next_]
+  std::deque<Footprint> trail_;  // poses before the latest moves and turns, newest last
   double speed_mps_ = 0.0;
   Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();
   double odometry_m_ = 0.0;

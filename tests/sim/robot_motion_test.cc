@@ -137,6 +137,79 @@ TEST(RobotMotion, ContactsWithTeammatesAreCountedOncePerContact) {
   EXPECT_EQ(robot.collisions(), 1u);  // drove through the proxy: one contact, not one per step
 }
 
+// A dead-end corridor 1.0 m wide along -y (walls x in [-0.7, -0.5] and [0.5, 0.7], closed at
+// y = -6): wide enough for every body, too narrow for either to turn in place.
+TriangleMesh dead_end() {
+  MeshBuilder b;
+  b.plane(-5, -10, 5, 5, 0.0);
+  b.box({-0.7, -6.2, 0}, {-0.5, 0, 1.5});
+  b.box({0.5, -6.2, 0}, {0.7, 0, 1.5});
+  b.box({-0.7, -6.2, 0}, {0.7, -6.0, 1.5});
+  return b.take();
+}
+
+// A robot nosed into the end of a dead end backs out: it cannot turn where it stands (a body
+// turning through the walls was the sim's old shortcut), so it reverses, heading unchanged.
+TEST(RobotMotion, NosedIntoADeadEndBacksOut) {
+  const RayCaster caster(dead_end());
+  for (const auto& species : {core::builtin_slugcat(), core::builtin_mr1000()}) {
+    RobotMotion robot(caster, species, {0, -1, 0}, -M_PI / 2);
+    EXPECT_EQ(drive(robot, {{0, -8, 0}}, 60), MotionState::kBlocked) << species.name;
+    EXPECT_EQ(robot.block_reason(), TerrainVerdict::kObstacle) << species.name;
+    EXPECT_LT(robot.ground_position().y(), -5.0) << species.name;
+    robot.follow({{0, -1, 0}});
+    robot.step(0.5);
+    EXPECT_EQ(robot.state(), MotionState::kMoving) << species.name;
+    EXPECT_TRUE(robot.reversing()) << species.name;
+    for (double t = 0; t < 60 && robot.state() == MotionState::kMoving; t += 0.1) robot.step(0.1);
+    EXPECT_EQ(robot.state(), MotionState::kIdle) << species.name << ": " << to_string(robot.block_reason());
+    EXPECT_NEAR(robot.ground_position().y(), -1.0, 1e-3) << species.name;
+    // Still facing the dead end: it never turned.
+    const Eigen::Vector3d forward = robot.body_pose().linear().col(0);
+    EXPECT_LT(forward.y(), -0.99) << species.name;
+  }
+}
+
+// In the open the body turns in place to face a waypoint behind it and drives forward.
+TEST(RobotMotion, TurnsInPlaceWhereItFits) {
+  const RayCaster caster(test_course());
+  RobotMotion robot(caster, core::builtin_slugcat(), {0, 5, 0}, 0.0);
+  robot.follow({{-3, 5, 0}});
+  robot.step(0.1);
+  EXPECT_FALSE(robot.reversing());
+  EXPECT_EQ(drive(robot, {{-3, 5, 0}}, 30), MotionState::kIdle);
+  EXPECT_LT(robot.body_pose().linear().col(0).x(), -0.99);
+}
+
+// A vehicle body on its wheels: its underside (0.30 m) is above SLUGCAT's step height and
+// below its body height. Turning next to it must not swing part of the body under it (the
+// old sim took the underside for ground there and then pinned the robot: every way out was
+// a "step" down from it). The robot stays on the ground, out of the vehicle, and can leave.
+TEST(RobotMotion, TurningNextToAnOverhangNeverPutsTheBodyUnderIt) {
+  MeshBuilder b;
+  b.plane(-10, -10, 10, 10, 0.0);
+  b.box({0, 0, 0.30}, {4, 2, 1.2});
+  const RayCaster caster(b.take());
+  ProxyBox vehicle;
+  vehicle.id = 99;
+  vehicle.center = {2, 1, 0.75};
+  vehicle.half_extents = {2, 1, 0.45};
+  const auto species = core::builtin_slugcat();
+  for (const Eigen::Vector3d goal : {Eigen::Vector3d(2, -3, 0), Eigen::Vector3d(2.5, 3, 0), Eigen::Vector3d(-1, -2, 0)}) {
+    RobotMotion robot(caster, species, {2, -0.4, 0}, 0.0);
+    robot.follow({goal});
+    for (double t = 0; t < 30 && robot.state() == MotionState::kMoving; t += 0.1) {
+      robot.step(0.1);
+      EXPECT_NEAR(robot.ground_position().z(), 0.0, 1e-6) << "towards " << goal.transpose();
+      EXPECT_FALSE(boxes_overlap(robot.body_box(), vehicle)) << "towards " << goal.transpose();
+    }
+    // Wherever it ended, it can leave: along the vehicle (reversing if it cannot turn), then away.
+    EXPECT_EQ(drive(robot, {{-1, robot.ground_position().y(), 0}, {-3, -3, 0}}, 60), MotionState::kIdle)
+        << "after " << goal.transpose() << ": " << to_string(robot.block_reason()) << " at "
+        << robot.ground_position().transpose() << " facing " << robot.body_pose().linear().col(0).transpose();
+  }
+}
+
 TEST(SimClock, AdvancesBySteps) {
   SimClock clock(2.0);
   clock.step(100'000'000);
