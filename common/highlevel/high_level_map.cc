@@ -4,14 +4,27 @@
 
 namespace hexplore::highlevel {
 
-HighLevelMap::HighLevelMap(std::vector<int> species_levels)
-    : levels_(species_levels), graph_(std::move(species_levels)) {}
+HighLevelMap::HighLevelMap(std::vector<int> species_levels, ClearanceOptions clearance)
+    : levels_(species_levels), graph_(std::move(species_levels)), clearance_(std::move(clearance)) {
+  graph_.set_body_radii(clearance_.options().body_radius_m);
+}
 
 void HighLevelMap::clear() {
   supervoxels_.clear();
   edges_.clear();
   incident_.clear();
   graph_.clear();
+  clearance_.clear();
+}
+
+void HighLevelMap::sync_clearance(uint64_t key) {
+  const Supervoxel* sv = find(key);
+  if (sv == nullptr || !graph_.contains(key)) return;
+  const auto& radii = clearance_.options().body_radius_m;
+  const double search = *std::max_element(radii.begin(), radii.end()) + 0.25;
+  std::vector<Eigen::Vector3d> waypoints;
+  for (double r : radii) waypoints.push_back(clearance_.clear_position(sv->center, r));
+  graph_.set_clearance(key, clearance_.clearance(sv->center, search), std::move(waypoints));
 }
 
 const Supervoxel* HighLevelMap::find(uint64_t key) const {
@@ -45,7 +58,19 @@ void HighLevelMap::sync_edge(const EdgeKey& e) {
 void HighLevelMap::apply(const MapUpdate& update) {
   if (update.empty()) return;
   if (update.full_snapshot) clear();
+  // Clearance bookkeeping: ground whose own supervoxel changed, and ground near a facade that
+  // appeared, moved or went.
+  const bool clearance = clearance_.options().enabled();
+  std::vector<uint64_t> dirty;
+  std::vector<Eigen::Vector3d> facades_touched;
+  auto forget = [&](uint64_t key) {
+    const Supervoxel* old = find(key);
+    if (!clearance || old == nullptr) return;
+    clearance_.erase(*old);
+    if (old->facade()) facades_touched.push_back(old->center);
+  };
   for (uint64_t key : update.removals) {
+    forget(key);
     supervoxels_.erase(key);
     graph_.remove_vertex(key);
   }
@@ -60,7 +85,14 @@ void HighLevelMap::apply(const MapUpdate& update) {
     }
     graph_.remove_edge(e.a, e.b);
   }
-  for (const Supervoxel& sv : update.upserts) supervoxels_[sv.key] = sv;
+  for (const Supervoxel& sv : update.upserts) {
+    forget(sv.key);
+    supervoxels_[sv.key] = sv;
+    if (!clearance) continue;
+    clearance_.insert(sv);
+    if (sv.facade()) facades_touched.push_back(sv.center);
+    else dirty.push_back(sv.key);
+  }
   for (const EdgeKey& e : update.edge_upserts) {
     if (e.a == e.b || !edges_.insert(EdgeKey::of(e.a, e.b)).second) continue;
     incident_[e.a].push_back(e.b);
@@ -69,6 +101,15 @@ void HighLevelMap::apply(const MapUpdate& update) {
   // Vertices first (an edge needs both ends), then every edge touching a changed vertex.
   for (const Supervoxel& sv : update.upserts) sync_vertex(sv.key);
   for (const EdgeKey& e : update.edge_upserts) sync_edge(EdgeKey::of(e.a, e.b));
+  if (clearance) {
+    const auto& radii = clearance_.options().body_radius_m;
+    const double reach = *std::max_element(radii.begin(), radii.end()) + 0.25 + clearance_.options().facade_half_extent_m;
+    for (const auto& p : facades_touched)
+      for (uint64_t key : clearance_.ground_near(p, reach)) dirty.push_back(key);
+    std::sort(dirty.begin(), dirty.end());
+    dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
+    for (uint64_t key : dirty) sync_clearance(key);
+  }
   ++version_;
 }
 

@@ -2,7 +2,9 @@
 // The fused high-level map a robot plans on: supervoxels by key (iterated in key order, the
 // same on every robot) plus the traversal-topology graph over the ground ones. It is fed by
 // MapUpdate batches: fused changes from MapFusion inside hlmap, or FusedMapUpdate messages
-// received by planning (see proto_convert.h).
+// received by planning (see proto_convert.h). With clearance options (planning's map), every
+// graph vertex also carries its clearance from the facades around it and, per species, a
+// waypoint moved away from them (see clearance.h, topology_graph.h).
 
 #include <cstdint>
 #include <map>
@@ -10,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "common/highlevel/clearance.h"
 #include "common/highlevel/supervoxel.h"
 #include "common/highlevel/topology_graph.h"
 
@@ -34,7 +37,7 @@ struct MapUpdate {
 class HighLevelMap {
  public:
   // levels[k] = traversal capability level of species index k (species_levels(team)).
-  explicit HighLevelMap(std::vector<int> species_levels = {1});
+  explicit HighLevelMap(std::vector<int> species_levels = {1}, ClearanceOptions clearance = {});
 
   // Applies a batch. Edge lengths are always the distance between the current supervoxel
   // centres; edges whose endpoints are not both traversable ground stay in the edge set but
@@ -57,12 +60,14 @@ class HighLevelMap {
  private:
   void sync_vertex(uint64_t key);
   void sync_edge(const EdgeKey& e);
+  void sync_clearance(uint64_t key);
 
   std::vector<int> levels_;
   std::map<uint64_t, Supervoxel> supervoxels_;
   std::set<EdgeKey> edges_;
   std::unordered_map<uint64_t, std::vector<uint64_t>> incident_;  // key -> edge partners
   TopologyGraph graph_;
+  ClearanceIndex clearance_;
   uint64_t version_ = 0;
 };
 

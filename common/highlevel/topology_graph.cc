@@ -48,6 +48,49 @@ void TopologyGraph::grid_erase(int index) {
   if (bucket.empty()) grid_.erase(it);
 }
 
+void TopologyGraph::set_body_radii(std::vector<double> radii_m) {
+  if (radii_m == radii_) return;
+  radii_ = std::move(radii_m);
+  changed();
+}
+
+void TopologyGraph::set_clearance(uint64_t key, double clearance_m, std::vector<Eigen::Vector3d> waypoints) {
+  const int i = index_of(key);
+  if (i < 0) return;
+  Vertex& v = vertices_[i];
+  if (v.clearance == clearance_m && v.waypoints == waypoints) return;
+  // Only the clearance enters path costs; a moved waypoint alone keeps cached searches.
+  const bool costs_change = v.clearance != clearance_m && !radii_.empty();
+  v.clearance = clearance_m;
+  v.waypoints = std::move(waypoints);
+  if (costs_change) changed();
+}
+
+double TopologyGraph::clearance(uint64_t key) const {
+  const int i = index_of(key);
+  return i < 0 ? std::numeric_limits<double>::infinity() : vertices_[i].clearance;
+}
+
+std::optional<Eigen::Vector3d> TopologyGraph::waypoint(uint64_t key, int species_index) const {
+  const int i = index_of(key);
+  if (i < 0) return std::nullopt;
+  const Vertex& v = vertices_[i];
+  if (species_index >= 0 && size_t(species_index) < v.waypoints.size()) return v.waypoints[size_t(species_index)];
+  return v.position;
+}
+
+double TopologyGraph::penalty(const Vertex& v, int species_index) const {
+  if (species_index < 0 || size_t(species_index) >= radii_.size()) return 0.0;
+  const double r = radii_[size_t(species_index)];
+  if (r <= 0.0 || v.clearance >= r) return 0.0;
+  return kClearancePenaltyM * (1.0 - std::max(0.0, v.clearance) / r);
+}
+
+double TopologyGraph::clearance_penalty(uint64_t key, int species_index) const {
+  const int i = index_of(key);
+  return i < 0 ? 0.0 : penalty(vertices_[i], species_index);
+}
+
 void TopologyGraph::upsert_vertex(uint64_t key, const Eigen::Vector3d& position, int requirement) {
   if (requirement < 1) {
     throw std::invalid_argument("TopologyGraph::upsert_vertex: vertex " + std::to_string(key) +
@@ -76,6 +119,8 @@ void TopologyGraph::upsert_vertex(uint64_t key, const Eigen::Vector3d& position,
   v.position = position;
   v.requirement = requirement;
   v.alive = true;
+  v.clearance = std::numeric_limits<double>::infinity();
+  v.waypoints.clear();
   v.adjacent.clear();
   index_[key] = i;
   grid_insert(i);
@@ -208,7 +253,7 @@ std::shared_ptr<const TopologyGraph::Search> TopologyGraph::search(int source, i
     if (d > dist[u]) continue;
     for (const auto& [v, len] : vertices_[u].adjacent) {
       if (vertices_[v].requirement > level) continue;
-      const double nd = d + len;
+      const double nd = d + len + penalty(vertices_[v], species);
       // Ties resolved towards the smaller predecessor key so paths do not depend on
       // insertion history.
       if (nd < dist[v] || (nd == dist[v] && pred[v] >= 0 && vertices_[u].key < vertices_[pred[v]].key)) {

@@ -8,6 +8,12 @@
 // predecessor arrays, O(N)) is cached until the graph changes; memory is O(N) per cached
 // source, and answers equal Floyd–Warshall's (tests/highlevel/topology_graph_test.cc).
 // Queries are const and thread-safe; mutation must not run concurrently with queries.
+//
+// Body clearance: a vertex may carry its clearance (distance to the nearest obstacle, set by
+// HighLevelMap) and, per species, a waypoint pushed away from obstacles. With body radii set
+// per species, a vertex closer to an obstacle than the species' radius costs extra to enter
+// (kClearancePenaltyM at zero clearance, falling linearly to 0 at the radius), so paths keep
+// the body clear where the map has room and still pass narrow spots (doors) where it has not.
 
 #include <cstdint>
 #include <limits>
@@ -24,12 +30,25 @@ namespace hexplore::highlevel {
 class TopologyGraph {
  public:
   static constexpr double kUnreachable = std::numeric_limits<double>::infinity();
+  static constexpr double kClearancePenaltyM = 4.0;
 
   // levels[k] = traversal capability level a_zeta(k) of species index k.
   explicit TopologyGraph(std::vector<int> species_levels = {1});
 
   // Adds or updates a vertex (traversal_requirement >= 1).
   void upsert_vertex(uint64_t key, const Eigen::Vector3d& position, int traversal_requirement);
+  // Body radius per species index (half-diagonal of its footprint); empty: no clearance costs.
+  void set_body_radii(std::vector<double> radii_m);
+  const std::vector<double>& body_radii() const { return radii_; }
+  // Clearance of a vertex and its waypoint per species index (the position a path of that
+  // species passes through); ignored for a key that is not a vertex.
+  void set_clearance(uint64_t key, double clearance_m, std::vector<Eigen::Vector3d> waypoints);
+  // Clearance of a vertex (infinity when never set or not a vertex).
+  double clearance(uint64_t key) const;
+  // Where a path of the species passes vertex `key`: its clearance waypoint, else its position.
+  std::optional<Eigen::Vector3d> waypoint(uint64_t key, int species_index) const;
+  // Extra cost of entering vertex `key` for a species (0 without radii or with room).
+  double clearance_penalty(uint64_t key, int species_index) const;
   // Removes a vertex and its edges; no-op when absent.
   void remove_vertex(uint64_t key);
   // Adds or updates the undirected edge a-b; ignored (returns false) unless both are vertices.
@@ -74,6 +93,8 @@ class TopologyGraph {
     Eigen::Vector3d position = Eigen::Vector3d::Zero();
     int requirement = 0;
     bool alive = false;
+    double clearance = std::numeric_limits<double>::infinity();
+    std::vector<Eigen::Vector3d> waypoints;  // per species; empty: the position
     std::vector<std::pair<int, double>> adjacent;  // (vertex index, length)
   };
   struct Search {  // one Dijkstra tree
@@ -87,8 +108,10 @@ class TopologyGraph {
   void grid_insert(int index);
   void grid_erase(int index);
   std::optional<uint64_t> nearest_impl(const Eigen::Vector3d& p, int species_index) const;
+  double penalty(const Vertex& v, int species_index) const;
 
   std::vector<int> levels_;
+  std::vector<double> radii_;
   std::vector<Vertex> vertices_;
   std::vector<int> free_;
   std::unordered_map<uint64_t, int> index_;

@@ -134,11 +134,12 @@ std::vector<uint64_t> path_avoiding(const highlevel::TopologyGraph& graph, uint6
     if (k == b) break;
     for (const auto& [n, w] : graph.neighbours(k)) {
       if (avoid.count(n) || !graph.passable(n, species)) continue;
+      const double nd = d + w + graph.clearance_penalty(n, species);
       const auto it = dist.find(n);
-      if (it != dist.end() && it->second <= d + w) continue;
-      dist[n] = d + w;
+      if (it != dist.end() && it->second <= nd) continue;
+      dist[n] = nd;
       parent[n] = k;
-      open.push({d + w, n});
+      open.push({nd, n});
     }
   }
   if (!dist.count(b)) return {};
@@ -174,8 +175,9 @@ ExecutablePlan executable_path(const highlevel::TopologyGraph& graph, const Eige
   const auto keys = avoiding ? path_avoiding(graph, *start, goal.ground_key, species, *avoid)
                              : graph.path(*start, goal.ground_key, species);
   if (keys.empty()) return out;
+  // Through each vertex where the species' body clears the obstacles the map knows around it.
   for (uint64_t k : keys)
-    if (auto p = graph.position(k)) {
+    if (auto p = graph.waypoint(k, species)) {
       out.waypoints.push_back(*p);
       out.keys.push_back(k);
     }

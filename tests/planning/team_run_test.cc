@@ -98,5 +98,73 @@ TEST(TeamRun, PathsGoAroundAvoidedVertices) {
   EXPECT_FALSE(executable_path(graph, from, 0, goal, &avoid).valid);
 }
 
+// A hall 4 m wide along +x (walls at y = 0 and y = 4, their facades centred on the surface as
+// mapped), ground supervoxels every metre from y = 0.5, 8-connected.
+highlevel::MapUpdate wall_hall() {
+  using highlevel::SurfaceClass;
+  highlevel::MapUpdate u;
+  auto key = [](int i, int j) { return highlevel::supervoxel_key({i, j, 0}, SurfaceClass::kGround); };
+  for (int i = 0; i < 12; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      highlevel::Supervoxel g;
+      g.key = key(i, j);
+      g.center = {i + 0.5, j + 0.5, 0.0};
+      g.surface = SurfaceClass::kGround;
+      g.traversal_requirement = 1;
+      g.voxel_count = 40;
+      u.upserts.push_back(g);
+      for (auto [di, dj] : {std::pair{1, 0}, std::pair{0, 1}, std::pair{1, 1}, std::pair{1, -1}})
+        if (i + di < 12 && j + dj >= 0 && j + dj < 4) u.edge_upserts.push_back(highlevel::EdgeKey::of(g.key, key(i + di, j + dj)));
+    }
+    for (int side = 0; side < 2; ++side) {
+      highlevel::Supervoxel f;
+      f.key = highlevel::supervoxel_key({i, side == 0 ? -1 : 4, 0}, SurfaceClass::kFacade);
+      f.center = {i + 0.5, side == 0 ? 0.0 : 4.0, 0.5};
+      f.normal = {0.0, side == 0 ? 1.0 : -1.0, 0.0};
+      f.surface = SurfaceClass::kFacade;
+      f.voxel_count = 40;
+      u.upserts.push_back(f);
+    }
+  }
+  return u;
+}
+
+// Paths keep the body clear of walls where the map has room (common/highlevel/clearance.h):
+// with the species' body radius on the map, a path along a wall passes through waypoints at
+// least that far from it, also when it goes around an avoided vertex. Without, the shortest
+// path hugs the wall closer than the body's half-diagonal (what pinned robots in the main job).
+TEST(TeamRun, PathsKeepTheBodyClearOfWalls) {
+  const core::TeamConfig team = Team::make_team();
+  highlevel::ClearanceOptions clearance;
+  clearance.body_radius_m = highlevel::body_radii(team);
+  highlevel::HighLevelMap plain_map(highlevel::species_levels(team));
+  highlevel::HighLevelMap map(highlevel::species_levels(team), clearance);
+  plain_map.apply(wall_hall());
+  map.apply(wall_hall());
+  highlevel::ClearanceIndex walls(clearance);
+  for (const auto& [key, sv] : map.supervoxels()) walls.insert(sv);
+  auto tightest = [&](const ExecutablePlan& p) {
+    double m = 10.0;
+    for (const auto& w : p.waypoints) m = std::min(m, walls.clearance(w, 10.0));
+    return m;
+  };
+  for (int species = 0; species < 2; ++species) {
+    const double radius = clearance.body_radius_m[size_t(species)];
+    TaskView goal;
+    goal.ground_key = highlevel::supervoxel_key({11, 0, 0}, highlevel::SurfaceClass::kGround);
+    const Eigen::Vector3d from(0.5, 0.5, 0);
+    const ExecutablePlan plain = executable_path(plain_map.graph(), from, species, goal);
+    const ExecutablePlan clear = executable_path(map.graph(), from, species, goal);
+    ASSERT_TRUE(plain.valid);
+    ASSERT_TRUE(clear.valid);
+    EXPECT_LT(tightest(plain), radius) << species;
+    EXPECT_GE(tightest(clear), radius - 1e-6) << species;
+    std::unordered_set<uint64_t> avoid{clear.keys[clear.keys.size() / 2]};
+    const ExecutablePlan around = executable_path(map.graph(), from, species, goal, &avoid);
+    ASSERT_TRUE(around.valid);
+    EXPECT_GE(tightest(around), radius - 1e-6) << species;
+  }
+}
+
 }  // namespace
 }  // namespace hexplore::planning

@@ -1,0 +1,137 @@
+#include "common/highlevel/clearance.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "common/highlevel/high_level_map.h"
+
+namespace hexplore::highlevel {
+namespace {
+
+// A hall along +x between two walls (y = 0 and y = width): ground supervoxels centred every
+// metre (rows at y = y0, y0 + 1, ...), wall facades every metre at body height, edges between
+// 8-neighbours. One species, body radius `radius`.
+MapUpdate hall(double width, double y0, int rows, int length = 10) {
+  MapUpdate u;
+  auto ground_key = [](int i, int j) { return supervoxel_key({i, j, 0}, SurfaceClass::kGround); };
+  for (int i = 0; i < length; ++i)
+    for (int j = 0; j < rows; ++j) {
+      Supervoxel g;
+      g.key = ground_key(i, j);
+      g.center = {i + 0.5, y0 + j, 0.0};
+      g.surface = SurfaceClass::kGround;
+      g.traversal_requirement = 1;
+      g.voxel_count = 40;
+      u.upserts.push_back(g);
+      for (int di = 0; di <= 1; ++di)
+        for (int dj = -1; dj <= 1; ++dj) {
+          if ((di == 0 && dj <= 0) || i + di >= length || j + dj < 0 || j + dj >= rows) continue;
+          u.edge_upserts.push_back(EdgeKey::of(g.key, ground_key(i + di, j + dj)));
+        }
+    }
+  for (int i = 0; i < length; ++i)
+    for (int side = 0; side < 2; ++side) {
+      Supervoxel f;
+      f.key = supervoxel_key({i, side == 0 ? -1 : 100, 0}, SurfaceClass::kFacade);
+      f.center = {i + 0.5, side == 0 ? 0.0 : width, 0.5};
+      f.normal = {0.0, side == 0 ? 1.0 : -1.0, 0.0};
+      f.surface = SurfaceClass::kFacade;
+      f.voxel_count = 40;
+      u.upserts.push_back(f);
+    }
+  return u;
+}
+
+double wall_distance(const Eigen::Vector3d& p, double width) { return std::min(p.y(), width - p.y()); }
+
+TEST(Clearance, IndexMeasuresTheDistanceToWallPatchesAtBodyHeight) {
+  ClearanceOptions o;
+  o.body_radius_m = {0.6};
+  ClearanceIndex index(o);
+  Supervoxel wall;
+  wall.key = 1 | kFacadeKeyBit;
+  wall.center = {0.5, 0.0, 0.5};
+  wall.normal = {0, 1, 0};
+  wall.surface = SurfaceClass::kFacade;
+  index.insert(wall);
+  EXPECT_NEAR(index.clearance({0.5, 0.4, 0.0}, 2.0), 0.4, 1e-9);
+  EXPECT_NEAR(index.clearance({0.8, 0.4, 0.0}, 2.0), 0.4, 1e-9);  // along the wall patch
+  EXPECT_NEAR(index.clearance({1.5, 0.0, 0.0}, 2.0), 0.5, 1e-9);  // past its end
+  EXPECT_NEAR(index.clearance({0.5, 0.4, 3.5}, 2.0), 2.0, 1e-9);  // a floor up: not in the way
+  const Eigen::Vector3d moved = index.clear_position({0.5, 0.4, 0.0}, 0.6);
+  EXPECT_NEAR(moved.y(), 0.6, 1e-6);
+  EXPECT_NEAR(moved.x(), 0.5, 1e-6);
+  index.erase(wall);
+  EXPECT_NEAR(index.clearance({0.5, 0.4, 0.0}, 2.0), 2.0, 1e-9);
+}
+
+// With body radii, paths along a hall keep off the walls where the hall has room: the
+// shortest path along the row next to the wall (0.5 m off it) loses to the row inside.
+TEST(Clearance, PathsInAWideHallKeepTheBodyRadiusFromTheWalls) {
+  ClearanceOptions o;
+  o.body_radius_m = {0.6};
+  HighLevelMap map({1}, o);
+  map.apply(hall(4.0, 0.5, 4));
+  const TopologyGraph& g = map.graph();
+  const uint64_t a = supervoxel_key({0, 0, 0}, SurfaceClass::kGround);
+  const uint64_t b = supervoxel_key({9, 0, 0}, SurfaceClass::kGround);
+  EXPECT_NEAR(g.clearance(a), 0.5, 1e-9);
+  EXPECT_GE(g.clearance(supervoxel_key({5, 1, 0}, SurfaceClass::kGround)), 0.6);  // measured up to radius + 0.25
+  const auto keys = g.path(a, b, 0);
+  ASSERT_FALSE(keys.empty());
+  for (uint64_t k : keys) EXPECT_GE(wall_distance(*g.waypoint(k, 0), 4.0), 0.6 - 1e-6) << k;
+  // Without radii (the hlmap service's map) nothing changes: exact shortest paths along the wall.
+  HighLevelMap plain({1});
+  plain.apply(hall(4.0, 0.5, 4));
+  EXPECT_NEAR(plain.graph().dist(a, b, 0), 9.0, 1e-9);
+  EXPECT_EQ(*plain.graph().waypoint(a, 0), *plain.graph().position(a));
+}
+
+// A corridor 1.2 m wide whose ground supervoxels are centred off its middle (0.35 m from one
+// wall): it stays passable, and the waypoints move to the middle, where the body fits best.
+TEST(Clearance, NarrowCorridorStaysPassableWithWaypointsInTheMiddle) {
+  ClearanceOptions o;
+  o.body_radius_m = {0.61};
+  HighLevelMap map({1}, o);
+  map.apply(hall(1.2, 0.35, 1));
+  const TopologyGraph& g = map.graph();
+  const uint64_t a = supervoxel_key({0, 0, 0}, SurfaceClass::kGround);
+  const uint64_t b = supervoxel_key({9, 0, 0}, SurfaceClass::kGround);
+  const auto keys = g.path(a, b, 0);
+  ASSERT_EQ(keys.size(), 10u);
+  for (uint64_t k : keys) EXPECT_NEAR(g.waypoint(k, 0)->y(), 0.6, 0.02);
+}
+
+// Clearance follows the map: a wall that appears later moves the waypoints near it, and
+// one that goes frees them again.
+TEST(Clearance, UpdatesFollowFacadesAddedAndRemoved) {
+  ClearanceOptions o;
+  o.body_radius_m = {0.6};
+  HighLevelMap map({1}, o);
+  MapUpdate ground = hall(4.0, 0.5, 4);
+  ground.upserts.erase(std::remove_if(ground.upserts.begin(), ground.upserts.end(),
+                                      [](const Supervoxel& s) { return s.facade(); }),
+                       ground.upserts.end());
+  map.apply(ground);
+  const uint64_t a = supervoxel_key({3, 0, 0}, SurfaceClass::kGround);
+  EXPECT_GT(map.graph().clearance(a), 0.6);
+  MapUpdate wall;
+  Supervoxel f;
+  f.key = supervoxel_key({3, -1, 0}, SurfaceClass::kFacade);
+  f.center = {3.5, 0.0, 0.5};
+  f.normal = {0, 1, 0};
+  f.surface = SurfaceClass::kFacade;
+  wall.upserts.push_back(f);
+  map.apply(wall);
+  EXPECT_NEAR(map.graph().clearance(a), 0.5, 1e-9);
+  EXPECT_NEAR(map.graph().waypoint(a, 0)->y(), 0.6, 1e-6);
+  MapUpdate gone;
+  gone.removals.push_back(f.key);
+  map.apply(gone);
+  EXPECT_GT(map.graph().clearance(a), 0.6);
+  EXPECT_NEAR(map.graph().waypoint(a, 0)->y(), 0.5, 1e-9);
+}
+
+}  // namespace
+}  // namespace hexplore::highlevel
