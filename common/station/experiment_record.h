@@ -39,7 +39,7 @@ inline const std::vector<std::string>& communication_categories() {
 struct ExperimentRecord {
   std::string scene;
   std::string planner;
-  std::string mode;  // "processes" or "composed"
+  std::string mode;  // "processes", "composed" or "lockstep"
   uint64_t seed = 0;
   std::vector<CompletenessSample> completeness;
   std::map<std::string, RobotTrack> robots;

@@ -1,5 +1,6 @@
 #include "common/station/results_writer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -165,28 +166,41 @@ std::vector<std::string> write_results(const ExperimentRecord& r, const std::str
 }
 
 std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs) {
-  std::vector<double> time, completeness, accumulated, length, planning, kbps;
+  std::vector<double> time, completeness, observable, accumulated, length, planning, kbps, wall;
   for (const auto& r : runs) {
     time.push_back(r.exploration_time_s);
     completeness.push_back(r.final_team_completeness());
+    observable.push_back(r.completeness.empty() ? 0.0 : r.completeness.back().team_observable);
     accumulated.push_back(r.accumulated_completeness());
     double total_length = 0.0;
     for (const auto& [_, track] : r.robots) total_length += track.length_m;
     length.push_back(total_length);
     planning.push_back(mean(all_planning_times(r)));
     kbps.push_back(static_cast<double>(team_bytes_total(r)) / 1024.0 / std::max(r.exploration_time_s, 1e-9));
+    wall.push_back(r.wall_time_s);
   }
   auto stat = [](const char* name, const std::vector<double>& v, bool last) {
+    const double lo = v.empty() ? 0.0 : *std::min_element(v.begin(), v.end());
+    const double hi = v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
     return std::string("  ") + quoted(name) + ": {\"mean\": " + number(mean(v)) + ", \"stddev\": " +
-           number(stddev(v)) + "}" + (last ? "\n" : ",\n");
+           number(stddev(v)) + ", \"min\": " + number(lo) + ", \"max\": " + number(hi) + "}" + (last ? "\n" : ",\n");
   };
   std::ostringstream j;
-  j << "{\n  \"runs\": " << runs.size() << ",\n  \"seeds\": [";
+  j << "{\n  \"runs\": " << runs.size() << ",\n";
+  if (!runs.empty()) {
+    j << "  \"scene\": " << quoted(runs.front().scene) << ",\n  \"planner\": " << quoted(runs.front().planner)
+      << ",\n  \"mode\": " << quoted(runs.front().mode) << ",\n";
+  }
+  j << "  \"seeds\": [";
   for (size_t i = 0; i < runs.size(); ++i) j << (i ? ", " : "") << runs[i].seed;
+  j << "],\n  \"end_reasons\": [";
+  for (size_t i = 0; i < runs.size(); ++i) j << (i ? ", " : "") << quoted(runs[i].end_reason);
   j << "],\n";
   j << stat("exploration_time_s", time, false) << stat("final_completeness", completeness, false)
+    << stat("final_observable_completeness", observable, false)
     << stat("accumulated_completeness", accumulated, false) << stat("total_trajectory_length_m", length, false)
-    << stat("mean_planning_time_s", planning, false) << stat("team_kb_per_s", kbps, true);
+    << stat("mean_planning_time_s", planning, false) << stat("team_kb_per_s", kbps, false)
+    << stat("wall_time_s", wall, true);
   j << "}\n";
   return j.str();
 }

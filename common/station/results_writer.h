@@ -17,9 +17,10 @@ std::vector<std::string> write_results(const ExperimentRecord& record, const std
 // The summary object alone (also embedded in summary.json), as JSON text.
 std::string summary_json(const ExperimentRecord& record);
 
-// Mean and standard deviation over several missions (e.g. several seeds) of the headline
-// metrics, as JSON text: exploration time, final completeness, accumulated completeness,
-// trajectory length, planning time, team KB/s.
+// Mean, standard deviation, min and max over several missions (e.g. several seeds) of the
+// headline metrics, as JSON text: exploration time, final completeness (team and observable),
+// accumulated completeness, trajectory length, planning time, team KB/s, wall time; plus the
+// seeds and each run's end reason.
 std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs);
 
 }  // namespace hexplore::station

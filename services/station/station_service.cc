@@ -105,7 +105,9 @@ void StationService::setup(service::ServiceContext& context) {
   evaluator_ = std::make_unique<CompletenessEvaluator>(context.team(), eval);
   recorder_ = std::make_unique<TeamRecorder>(context.team());
   // In the composed team process (fast mode) every socket is inproc.
-  recorder_->record().mode = context.team().transport.scheme == "inproc" ? "composed" : "processes";
+  recorder_->record().mode = context.lockstep()                             ? "lockstep"
+                             : context.team().transport.scheme == "inproc" ? "composed"
+                                                                           : "processes";
   MissionMonitorOptions monitor;
   monitor.time_limit_s = context.team().time_limit_s;
   monitor.settle_s = options_.settle_s;
@@ -245,6 +247,7 @@ void StationService::finish(const std::string& reason) {
     record.exploration_time_s = recorder_->mission_time_s();
     record.wall_time_s = core::ns_to_s(core::monotonic_ns() - start_wall_ns_);
     record.final_map_points_m = evaluator_->union_points();
+    record_complete_ = true;
     try {
       const auto files = write_results(record, options_.results_dir);
       std::printf("[station] mission over (%s) after %.1f s sim time; completeness %.1f%%; results in %s (%zu files)\n",

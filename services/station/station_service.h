@@ -57,6 +57,9 @@ class StationService : public service::Service {
   void setup(service::ServiceContext& context) override;
   void on_shutdown(service::ServiceContext& context) override;
   void fill_status(v1::ServiceStatus& status) override;
+  // The finished mission's record (nullptr before the mission is over). Read it only after the
+  // station's loop has ended (ServiceHost::wait), e.g. to summarise several runs.
+  const ExperimentRecord* result() const { return record_complete_ ? &recorder_->record() : nullptr; }
 
  private:
   void subscribe_team(service::ServiceContext& context);
@@ -79,6 +82,7 @@ class StationService : public service::Service {
   double last_progress_s_ = -1e9;
   int snapshots_pending_ = 0;
   bool finished_ = false;
+  bool record_complete_ = false;  // the record is complete
   std::string end_reason_;
   int64_t start_wall_ns_ = 0;
 };

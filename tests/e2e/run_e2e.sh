@@ -2,13 +2,14 @@
 # One end-to-end case: a SLUGCAT and an MR1000 explore the generated yard-and-room scene
 # (make_scene.sh) through the launcher (every service its own process), and the results
 # folder's summary.json must show the stated completeness and no collision.
-#   run_e2e.sh CASE LAUNCHER STATION WORKDIR BASE_PORT
+#   run_e2e.sh CASE LAUNCHER STATION WORKDIR BASE_PORT [EXPERIMENT]
 # CASE: explore (plain run), switch (planner switched to no-mnss mid-run via the station's
 # --send), kill (every service of mr1000a killed mid-run; slugcat1 must finish the work),
-# lockstep (the one-process fast mode, twice, the second time with two CPU hogs beside it: the
-# trajectories, completeness and communication records must be byte-identical).
+# lockstep (the one-process fast mode through the launcher, then the same seed again through
+# hexplore_experiment with two CPU hogs beside it: the trajectories, completeness and
+# communication records must be byte-identical, and the experiment writes its summary).
 set -euo pipefail
-case=$1 launch=$2 station=$3 work=$4 port=$5
+case=$1 launch=$2 station=$3 work=$4 port=$5 experiment=${6:-}
 here=$(cd "$(dirname "$0")" && pwd)
 min_observable=${E2E_MIN_OBSERVABLE:-0.70}
 rm -rf "$work"
@@ -110,12 +111,13 @@ case $case in
   lockstep)
     hogs=()
     for _ in 1 2; do yes > /dev/null & hogs+=($!); done
-    "$launch" --compose --config "$work/team.yaml" --log-dir "$work/logs2" \
-      --child-args "--results $work/results2 --log-level debug" > "$work/launch2.log" 2>&1 || true
+    "$experiment" --config "$work/team.yaml" --seeds 1 --results "$work/experiment" > "$work/experiment.log" 2>&1 ||
+      { kill "${hogs[@]}"; tail -n 20 "$work/experiment.log"; fail "hexplore_experiment failed"; }
     kill "${hogs[@]}"
     for f in trajectories.csv completeness.csv communication.csv; do
-      cmp "$work/results/$f" "$work/results2/$f" || fail "$f differs between two lockstep runs"
+      cmp "$work/results/$f" "$work/experiment/seed-1/$f" || fail "$f differs between two lockstep runs of seed 1"
     done
+    grep -q '"seeds": \[1\]' "$work/experiment/summary.json" || fail "no experiment summary for seed 1"
     echo "two lockstep runs (the second beside two CPU hogs) recorded identical trajectories, completeness and traffic"
     ;;
 esac

@@ -67,8 +67,12 @@ TEST(ResultsWriter, WritesEveryFile) {
 
 TEST(ResultsWriter, MultiRunSummaryHasMeanAndSpread) {
   const auto json = multi_run_summary_json({sample_record(1, 100.0, 0.8), sample_record(2, 200.0, 0.6)});
-  EXPECT_NE(json.find("\"exploration_time_s\": {\"mean\": 150, \"stddev\": 70.71067812"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"exploration_time_s\": {\"mean\": 150, \"stddev\": 70.71067812, \"min\": 100, \"max\": 200}"),
+            std::string::npos)
+      << json;
   EXPECT_NE(json.find("\"seeds\": [1, 2]"), std::string::npos);
+  EXPECT_NE(json.find("\"final_observable_completeness\": {"), std::string::npos);
+  EXPECT_NE(json.find("\"end_reasons\": ["), std::string::npos);
 }
 
 TEST(ResultsWriter, UnwritableFolderIsNamed) {

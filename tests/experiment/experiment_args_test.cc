@@ -1,0 +1,54 @@
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "tools/experiment/experiment_args.h"
+
+namespace hexplore::experiment {
+namespace {
+
+ExperimentArgs parse(std::vector<std::string> args) {
+  args.insert(args.begin(), "hexplore_experiment");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  return parse_experiment_args(static_cast<int>(argv.size()), argv.data());
+}
+
+TEST(ExperimentArgs, SeedListsAndRanges) {
+  EXPECT_EQ(parse_seed_list("3"), (std::vector<uint64_t>{3}));
+  EXPECT_EQ(parse_seed_list("1,2,5-7"), (std::vector<uint64_t>{1, 2, 5, 6, 7}));
+  EXPECT_EQ(parse_seed_list("0-0,9"), (std::vector<uint64_t>{0, 9}));
+}
+
+TEST(ExperimentArgs, BadSeedsAreNamed) {
+  for (const char* bad : {"", "x", "1,,y", "-3", "5-2", "1-5000", "2.5"}) {
+    try {
+      parse_seed_list(bad);
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("--seeds"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(ExperimentArgs, OptionsAndPassThrough) {
+  const auto a = parse({"--config", "t.yaml", "--seeds", "1-3", "--planner", "no-mnss", "--robot", "r1", "--robot",
+                        "r2", "--snapshot-period-s", "5", "--results", "out"});
+  EXPECT_EQ(a.config, "t.yaml");
+  EXPECT_EQ(a.seeds.size(), 3u);
+  EXPECT_EQ(a.planner, "no-mnss");
+  EXPECT_EQ(a.robots, (std::vector<std::string>{"r1", "r2"}));
+  EXPECT_EQ(a.results_dir, "out");
+  EXPECT_EQ(a.service_arguments.at("snapshot-period-s"), "5");
+}
+
+TEST(ExperimentArgs, MissingPiecesAreErrors) {
+  EXPECT_THROW(parse({"--seeds", "1"}), std::invalid_argument);
+  EXPECT_THROW(parse({"--config", "t.yaml"}), std::invalid_argument);
+  EXPECT_THROW(parse({"--config"}), std::invalid_argument);
+  EXPECT_THROW(parse({"config", "t.yaml"}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hexplore::experiment

@@ -1,0 +1,65 @@
+#include "tools/experiment/experiment_args.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace hexplore::experiment {
+
+namespace {
+
+uint64_t to_seed(const std::string& text) {
+  size_t used = 0;
+  unsigned long long value = 0;
+  try {
+    value = std::stoull(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (text.empty() || used != text.size() || text[0] == '-')
+    throw std::invalid_argument("--seeds: '" + text + "' is not a seed (a non-negative integer)");
+  return value;
+}
+
+}  // namespace
+
+std::vector<uint64_t> parse_seed_list(const std::string& text) {
+  std::vector<uint64_t> seeds;
+  for (size_t start = 0; start <= text.size();) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    start = comma + 1;
+    if (item.empty()) continue;
+    if (const size_t dash = item.find('-', 1); dash != std::string::npos) {
+      const uint64_t first = to_seed(item.substr(0, dash)), last = to_seed(item.substr(dash + 1));
+      if (last < first || last - first >= 1000)
+        throw std::invalid_argument("--seeds: range '" + item + "' must go upwards and hold at most 1000 seeds");
+      for (uint64_t s = first; s <= last; ++s) seeds.push_back(s);
+    } else {
+      seeds.push_back(to_seed(item));
+    }
+  }
+  if (seeds.empty()) throw std::invalid_argument("--seeds: no seed given");
+  return seeds;
+}
+
+ExperimentArgs parse_experiment_args(int argc, char** argv) {
+  ExperimentArgs a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag.rfind("--", 0) != 0 || flag.size() < 3) throw std::invalid_argument("unexpected argument '" + flag + "'");
+    if (i + 1 >= argc) throw std::invalid_argument("missing value after " + flag);
+    const std::string value = argv[++i];
+    if (flag == "--config") a.config = value;
+    else if (flag == "--seeds") a.seeds = parse_seed_list(value);
+    else if (flag == "--results") a.results_dir = value;
+    else if (flag == "--planner") a.planner = value;
+    else if (flag == "--robot") a.robots.push_back(value);
+    else if (flag == "--log-level") a.log_level = value;
+    else a.service_arguments[flag.substr(2)] = value;
+  }
+  if (a.config.empty()) throw std::invalid_argument("missing --config TEAM.yaml");
+  if (a.seeds.empty()) throw std::invalid_argument("missing --seeds LIST (e.g. 1,2,3 or 1-5)");
+  return a;
+}
+
+}  // namespace hexplore::experiment
