@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
+#include <string_view>
 
 namespace hexplore::launcher {
 namespace {
@@ -203,14 +204,18 @@ void Supervisor::read_stream(Stream& s, bool final) {
     }
     break;
   }
+  // A line that already names the process (the station's "[station] t=...") keeps one prefix.
+  const std::string prefix = "[" + s.child->spec.name + "] ";
+  auto prefixed = [&prefix](std::string_view line) {
+    return line.substr(0, prefix.size()) == prefix ? std::string(line) : prefix + std::string(line);
+  };
   size_t start = 0;
   std::string out;
-  for (size_t nl; (nl = s.pending.find('\n', start)) != std::string::npos; start = nl + 1) {
-    out += "[" + s.child->spec.name + "] " + s.pending.substr(start, nl - start) + "\n";
-  }
+  for (size_t nl; (nl = s.pending.find('\n', start)) != std::string::npos; start = nl + 1)
+    out += prefixed(std::string_view(s.pending).substr(start, nl - start)) + "\n";
   s.pending.erase(0, start);
   if (final && !s.pending.empty()) {
-    out += "[" + s.child->spec.name + "] " + s.pending + "\n";
+    out += prefixed(s.pending) + "\n";
     s.pending.clear();
   }
   if (!out.empty()) write_all(s.out_fd, out);
