@@ -10,6 +10,11 @@ namespace {
 
 constexpr double kMaxSubstepM = 0.05;   // small enough that a climbable slope never reads as a step
 constexpr double kWaypointReachedM = 1e-3;
+// Leading waypoints closer than this are passed by: a path that starts at the robot, or at
+// the nearest point of a path it strayed from a little (the safety layer re-sends the
+// remaining path every cycle), is followed by steering for the point after, as a path
+// follower does, not by turning in place towards a point a few centimetres aside.
+constexpr double kPassByM = 0.35;
 // How far back a body may retrace its own poses to find room to turn: 40 moves of up to
 // kMaxSubstepM, or turns.
 constexpr size_t kTrailPoses = 40;
@@ -63,6 +68,7 @@ void RobotMotion::follow(std::vector<Eigen::Vector3d> waypoints, double speed_mp
   if (state_ == MotionState::kEmergencyStop) return;
   path_ = std::move(waypoints);
   next_ = 0;
+  while (next_ + 1 < path_.size() && (path_[next_].head<2>() - footprint_.xy).norm() < kPassByM) ++next_;
   speed_mps_ = speed_mps > 0 ? std::min(speed_mps, species().speed_mps) : species().speed_mps;
   block_reason_ = TerrainVerdict::kOk;
   reversing_ = false;

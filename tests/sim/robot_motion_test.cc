@@ -181,6 +181,22 @@ TEST(RobotMotion, TurnsInPlaceWhereItFits) {
   EXPECT_LT(robot.body_pose().linear().col(0).x(), -0.99);
 }
 
+// The safety layer re-sends the remaining path every cycle, starting at the nearest point of
+// the path when the robot strayed from it a little. The robot steers for the point after it
+// instead of turning aside to a point centimetres away (which made robots jitter in place
+// next to obstacles where that turn was blocked and undone every cycle).
+TEST(RobotMotion, PathsStartingBesideTheRobotAreJoinedNotTurnedTo) {
+  const RayCaster caster(test_course());
+  RobotMotion robot(caster, core::builtin_slugcat(), {0, 5, 0}, 0.0);
+  for (int cycle = 0; cycle < 20; ++cycle) {
+    const Eigen::Vector3d at = robot.ground_position();
+    robot.follow({at, {at.x(), 5.1, 0}, {6, 5.1, 0}});
+    robot.step(0.1);
+    EXPECT_GT(robot.body_pose().linear().col(0).x(), 0.99) << cycle;
+  }
+  EXPECT_NEAR(robot.odometry_m(), 20 * 0.1 * core::builtin_slugcat().speed_mps, 1e-6);
+}
+
 // A vehicle body on its wheels: its underside (0.30 m) is above SLUGCAT's step height and
 // below its body height. Turning next to it must not swing part of the body under it (the
 // old sim took the underside for ground there and then pinned the robot: every way out was
