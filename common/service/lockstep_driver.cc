@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "common/core/clock.h"
 #include "common/core/log.h"
 
 namespace hexplore::service {
@@ -161,6 +162,8 @@ void LockstepDriver::drive() {
       now_ns_ = now;
     }
   }
+  core::LogLine(core::LogLevel::kInfo, "lockstep") << "stepped " << core::ns_to_s(now_ns()) << " s of sim time in "
+                                                    << rounds() << " rounds";
   run_phase(Phase::kFinish);
 }
 

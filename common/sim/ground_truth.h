@@ -39,6 +39,10 @@ class VoxelSet {
   // Whether the voxel holding p or one of its 26 neighbours is occupied.
   bool near(const Eigen::Vector3f& p) const;
   size_t size() const { return keys_.size(); }
+  template <typename F>
+  void for_each_cell(F&& f) const {
+    for (uint64_t key : keys_) f(core::cell_of_key(key));
+  }
   double resolution_m() const { return resolution_m_; }
 
  private:

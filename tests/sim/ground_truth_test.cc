@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "common/sim/mesh_builder.h"
 #include "common/sim/observability.h"
 #include "common/sim/ray_caster.h"
@@ -41,6 +43,32 @@ TEST(GroundTruth, CompletenessOfTheSamplesThemselvesIsFullAndOfAnEmptyMapZero) {
   const double f = completeness(samples, VoxelSet::from_points(0.15, half)).fraction;
   EXPECT_GT(f, 0.3);
   EXPECT_LT(f, 0.7);
+}
+
+TEST(GroundTruth, CompletenessCountsExactlyTheSamplesNearAnOccupiedVoxel) {
+  // The evaluation's dense bit grid must agree with VoxelSet::near sample by sample, also for
+  // voxels outside the samples' box, negative cells and a mask.
+  const auto samples = sample_surface(small_world(), 0.1, 3);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> x(-12.f, 12.f), z(-1.f, 4.f);
+  std::vector<Eigen::Vector3f> points;
+  for (int i = 0; i < 4000; ++i) points.emplace_back(x(rng), x(rng), z(rng));
+  const VoxelSet map = VoxelSet::from_points(0.15, points);
+  std::vector<uint8_t> mask(samples.points.size());
+  for (size_t i = 0; i < mask.size(); ++i) mask[i] = (i % 3) != 0;
+  size_t near_all = 0, near_masked = 0, masked = 0;
+  for (size_t i = 0; i < samples.points.size(); ++i) {
+    const bool near = map.near(samples.points[i]);
+    near_all += near;
+    if (mask[i]) {
+      ++masked;
+      near_masked += near;
+    }
+  }
+  ASSERT_GT(near_all, 100u);
+  EXPECT_EQ(completeness(samples, map).covered, near_all);
+  EXPECT_EQ(completeness(samples, map, &mask).covered, near_masked);
+  EXPECT_EQ(completeness(samples, map, &mask).total, masked);
 }
 
 TEST(GroundTruth, VoxelKeysMatchTheWireFormat) {
