@@ -13,6 +13,20 @@ std::vector<double> body_radii(const core::TeamConfig& team) {
   return out;
 }
 
+std::vector<double> body_half_widths(const core::TeamConfig& team) {
+  std::vector<double> out;
+  for (const auto& s : team.species) out.push_back(s.body_half_extents_m.y());
+  return out;
+}
+
+ClearanceOptions clearance_options(const core::TeamConfig& team) {
+  ClearanceOptions o;
+  o.body_radius_m = body_radii(team);
+  o.body_half_width_m = body_half_widths(team);
+  o.facade_half_extent_m = 0.5 * team.params.eta_s_m;
+  return o;
+}
+
 ClearanceIndex::ClearanceIndex(ClearanceOptions options, double cell_m) : options_(std::move(options)), cell_m_(cell_m) {}
 
 uint64_t ClearanceIndex::cell_key(const Eigen::Vector3d& p) const {

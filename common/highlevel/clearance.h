@@ -15,7 +15,8 @@
 namespace hexplore::highlevel {
 
 struct ClearanceOptions {
-  std::vector<double> body_radius_m;  // per species index (footprint half-diagonal); empty: off
+  std::vector<double> body_radius_m;      // per species index (footprint half-diagonal); empty: off
+  std::vector<double> body_half_width_m;  // per species index: the least clearance a body stands in
   double facade_half_extent_m = 0.5;  // a facade patch reaches this far from its centre (eta_s / 2)
   double below_m = 0.2;               // facades centred from this far below the ground ...
   double above_m = 1.5;               // ... to this far above it are in a body's way there
@@ -24,8 +25,11 @@ struct ClearanceOptions {
   bool enabled() const { return !body_radius_m.empty(); }
 };
 
-// Footprint half-diagonal of every species of the team (species index order).
+// Footprint half-diagonal and half-width of every species of the team (species index order).
 std::vector<double> body_radii(const core::TeamConfig& team);
+std::vector<double> body_half_widths(const core::TeamConfig& team);
+// Both, for the map of a team.
+ClearanceOptions clearance_options(const core::TeamConfig& team);
 
 // Supervoxel centres on a planar grid, for clearance queries and for finding the ground
 // vertices near a changed facade.

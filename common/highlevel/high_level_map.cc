@@ -6,7 +6,7 @@ namespace hexplore::highlevel {
 
 HighLevelMap::HighLevelMap(std::vector<int> species_levels, ClearanceOptions clearance)
     : levels_(species_levels), graph_(std::move(species_levels)), clearance_(std::move(clearance)) {
-  graph_.set_body_radii(clearance_.options().body_radius_m);
+  graph_.set_body_radii(clearance_.options().body_radius_m, clearance_.options().body_half_width_m);
 }
 
 void HighLevelMap::clear() {

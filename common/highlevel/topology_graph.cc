@@ -48,10 +48,17 @@ void TopologyGraph::grid_erase(int index) {
   if (bucket.empty()) grid_.erase(it);
 }
 
-void TopologyGraph::set_body_radii(std::vector<double> radii_m) {
+void TopologyGraph::set_body_radii(std::vector<double> radii_m, std::vector<double> half_widths_m) {
+  half_widths_ = std::move(half_widths_m);
   if (radii_m == radii_) return;
   radii_ = std::move(radii_m);
   changed();
+}
+
+bool TopologyGraph::room_to_stand(uint64_t key, int species_index) const {
+  const int i = index_of(key);
+  if (i < 0 || species_index < 0 || size_t(species_index) >= half_widths_.size()) return true;
+  return vertices_[i].clearance >= half_widths_[size_t(species_index)];
 }
 
 void TopologyGraph::set_clearance(uint64_t key, double clearance_m, std::vector<Eigen::Vector3d> waypoints) {

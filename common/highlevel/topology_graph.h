@@ -38,8 +38,13 @@ class TopologyGraph {
   // Adds or updates a vertex (traversal_requirement >= 1).
   void upsert_vertex(uint64_t key, const Eigen::Vector3d& position, int traversal_requirement);
   // Body radius per species index (half-diagonal of its footprint); empty: no clearance costs.
-  void set_body_radii(std::vector<double> radii_m);
+  // Half-widths (optional): the least clearance a body of the species can stand in.
+  void set_body_radii(std::vector<double> radii_m, std::vector<double> half_widths_m = {});
   const std::vector<double>& body_radii() const { return radii_; }
+  // Whether the species' body has room to stand at vertex `key` (its clearance is at least
+  // the half-width; true where either is unknown). Paths may still squeeze through where
+  // not (the clearance estimate is coarse); goals should not lie there.
+  bool room_to_stand(uint64_t key, int species_index) const;
   // Clearance of a vertex and its waypoint per species index (the position a path of that
   // species passes through); ignored for a key that is not a vertex.
   void set_clearance(uint64_t key, double clearance_m, std::vector<Eigen::Vector3d> waypoints);
@@ -112,6 +117,7 @@ class TopologyGraph {
 
   std::vector<int> levels_;
   std::vector<double> radii_;
+  std::vector<double> half_widths_;
   std::vector<Vertex> vertices_;
   std::vector<int> free_;
   std::unordered_map<uint64_t, int> index_;

@@ -67,8 +67,9 @@ std::vector<Route> reference_seed(const MtspProblem& p, const std::vector<uint64
 }
 
 // Ground vertices each species can drive to from where its robots stand (index = species),
-// limited to the exploration region: robots stand inside the site (outside it the ground may
-// end under them).
+// limited to the exploration region (robots stand inside the site; outside it the ground may
+// end under them) and to vertices with room for the species' body (not, e.g., the ground seen
+// under a vehicle: paths may pass such spots, views may not stand there).
 std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
                                                            const std::vector<RobotState>& robots, size_t species,
                                                            const Eigen::AlignedBox3d& region) {
@@ -79,7 +80,8 @@ std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::Topo
     auto& set = out[size_t(r.species)];
     if (set.count(*start)) continue;  // a teammate of the same species is in the same component
     for (const auto& [key, d] : graph.distances_from(*start, r.species))
-      if (const auto p = graph.position(key); p && region.contains(*p)) set.insert(key);
+      if (const auto p = graph.position(key); p && region.contains(*p) && graph.room_to_stand(key, r.species))
+        set.insert(key);
   }
   return out;
 }

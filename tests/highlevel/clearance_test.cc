@@ -133,5 +133,27 @@ TEST(Clearance, UpdatesFollowFacadesAddedAndRemoved) {
   EXPECT_NEAR(map.graph().waypoint(a, 0)->y(), 0.5, 1e-9);
 }
 
+// Ground under something low (a vehicle roof 1.2 m up, seen from outside; its underside is
+// not in the map) has no room for a body to stand; open ground has.
+TEST(Clearance, NoRoomToStandUnderAnOverhang) {
+  ClearanceOptions o;
+  o.body_radius_m = {0.54};
+  o.body_half_width_m = {0.3};
+  HighLevelMap map({1}, o);
+  MapUpdate u = hall(4.0, 0.5, 4);
+  Supervoxel roof;
+  roof.key = supervoxel_key({5, 2, 1}, SurfaceClass::kFacade);
+  roof.center = {5.5, 2.5, 1.2};
+  roof.normal = {0, 0, 1};
+  roof.surface = SurfaceClass::kFacade;
+  u.upserts.push_back(roof);
+  map.apply(u);
+  EXPECT_FALSE(map.graph().room_to_stand(supervoxel_key({5, 2, 0}, SurfaceClass::kGround), 0));
+  EXPECT_TRUE(map.graph().room_to_stand(supervoxel_key({2, 2, 0}, SurfaceClass::kGround), 0));
+  // Paths may still pass it (the estimate is coarse; a door must not close), at a cost.
+  EXPECT_TRUE(map.graph().passable(supervoxel_key({5, 2, 0}, SurfaceClass::kGround), 0));
+  EXPECT_GT(map.graph().clearance_penalty(supervoxel_key({5, 2, 0}, SurfaceClass::kGround), 0), 0.0);
+}
+
 }  // namespace
 }  // namespace hexplore::highlevel

@@ -166,5 +166,34 @@ TEST(TeamRun, PathsKeepTheBodyClearOfWalls) {
   }
 }
 
+// Views do not stand where the body has no room (here: under a vehicle roof): the robots
+// drove there, were blocked by the vehicle's body and came back for the next target there.
+TEST(TeamRun, NoViewStandsWhereTheBodyHasNoRoom) {
+  const Team t;
+  highlevel::HighLevelMap map(highlevel::species_levels(t.team), highlevel::clearance_options(t.team));
+  highlevel::MapUpdate u = wall_hall();
+  for (auto& sv : u.upserts) sv.covered = sv.facade();  // all ground still to be seen
+  highlevel::Supervoxel roof;
+  roof.key = highlevel::supervoxel_key({6, 2, 1}, highlevel::SurfaceClass::kFacade);
+  roof.center = {6.5, 2.5, 1.2};
+  roof.normal = {0, 0, 1};
+  roof.surface = highlevel::SurfaceClass::kFacade;
+  roof.covered = true;
+  u.upserts.push_back(roof);
+  map.apply(u);
+  const uint64_t under = highlevel::supervoxel_key({6, 2, 0}, highlevel::SurfaceClass::kGround);
+  ASSERT_FALSE(map.graph().room_to_stand(under, 0));
+  auto p = PlannerRegistry::builtin().create("hexplore");
+  p->configure({t.caps, t.options});
+  PlanRequest r;
+  r.map = &map;
+  r.robots = {{"slug1", 0, {0.5, 1.5, 0}}, {"mr1", 1, {11.5, 2.5, 0}}};
+  const PlanResult res = p->plan(r);
+  ASSERT_GT(res.views, 0);
+  EXPECT_GT(res.view_stats.unreachable_ground, 0);
+  for (const auto& plan : res.robots)
+    for (const auto& v : plan.route) EXPECT_NE(v.ground_key, under);
+}
+
 }  // namespace
 }  // namespace hexplore::planning
