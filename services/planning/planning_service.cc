@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
@@ -51,10 +52,7 @@ void PlanningService::setup(service::ServiceContext& context) {
   options_.region = team.exploration_region;
   eta_t_s_ = team.params.eta_t_s;
   // Paths keep the bodies clear of the obstacles the map knows (common/highlevel/clearance.h).
-  highlevel::ClearanceOptions clearance;
-  clearance.body_radius_m = highlevel::body_radii(team);
-  clearance.facade_half_extent_m = 0.5 * team.params.eta_s_m;
-  map_ = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team), clearance);
+  map_ = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team), highlevel::clearance_options(team));
   for (const auto& r : team.robots) {
     positions_[r.id] = r.start_position_m;
     heard_ns_[r.id] = context.now_ns();  // a teammate gets peer_timeout_s to show up
@@ -247,6 +245,27 @@ std::vector<planning::RobotState> PlanningService::team_states(int& self) const 
   return out;
 }
 
+std::unordered_set<uint64_t> PlanningService::avoided_vertices() const {
+  std::unordered_set<uint64_t> out = avoid_;
+  const auto& team = context_->team();
+  const int64_t now = context_->now_ns();
+  const auto radii = highlevel::body_radii(team);
+  const auto own = team.species_index(team.robots[size_t(self_)].species);
+  const double own_radius = own ? radii[size_t(*own)] : 0.0;
+  std::vector<uint64_t> keys;
+  for (const auto& r : team.robots) {
+    if (r.id == robot_id_ || core::ns_to_s(now - heard_ns_.at(r.id)) <= peer_timeout_s_) continue;
+    const auto species = team.species_index(r.species);
+    const double reach = own_radius + (species ? radii[size_t(*species)] : 0.0);
+    if (keys.empty()) keys = map_->graph().vertex_keys();
+    const Eigen::Vector3d& at = positions_.at(r.id);
+    for (uint64_t k : keys)
+      if (const auto p = map_->graph().position(k); p && (*p - at).head<2>().norm() < reach && std::abs(p->z() - at.z()) < 1.5)
+        out.insert(k);
+  }
+  return out;
+}
+
 void PlanningService::count_attempt(const planning::TaskView& view) {
   for (uint64_t t : view.targets)
     if (++attempts_[t] >= give_up_visits_) ignored_.insert(t);
@@ -268,9 +287,10 @@ bool PlanningService::publish_path() {
   const auto& team = context_->team();
   const int species = team.species_index(team.robots[size_t(self_)].species).value_or(0);
   const size_t first = next_view_;
+  const std::unordered_set<uint64_t> avoid = avoided_vertices();
   for (; next_view_ < route_.size(); ++next_view_) {
     planning::ExecutablePlan path =
-        planning::executable_path(map_->graph(), positions_.at(robot_id_), species, route_[next_view_], &avoid_);
+        planning::executable_path(map_->graph(), positions_.at(robot_id_), species, route_[next_view_], &avoid);
     if (path.valid) {
       path_keys_ = path.keys;
       path_points_ = path.waypoints;

@@ -68,6 +68,10 @@ class PlanningService : public service::Service {
   // views without a path. False when no view of the route is left.
   bool publish_path();
   void count_attempt(const planning::TaskView& view);
+  // The vertices our paths keep off: those we were blocked at, and those within reach of the
+  // body of a teammate gone silent (its services died; the robot still stands where it was
+  // last heard, and no safety layer reports it any more).
+  std::unordered_set<uint64_t> avoided_vertices() const;
   // The live team (self, and teammates heard from recently); sets `self` to our index in it.
   std::vector<planning::RobotState> team_states(int& self) const;
 

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <algorithm>
 #include <functional>
+#include <map>
 #include <optional>
 
 #include "common/core/endpoints.h"
@@ -51,7 +53,8 @@ class PlanningServiceTest : public ::testing::Test {
     options.compose = true;
     options.metrics_port = 0;
     options.arguments = {{"cycle-ms", "50"}, {"min-replan-s", "0.2"}};
-    host_ = std::make_unique<service::ServiceHost>(core::parse_team_config(kTeam, "test team"), options);
+    for (const auto& [k, v] : extra_arguments_) options.arguments[k] = v;
+    host_ = std::make_unique<service::ServiceHost>(core::parse_team_config(team_yaml_, "test team"), options);
     const auto& team = host_->team();
     // The fused map that hlmap would serve.
     planning::SyntheticSceneOptions scene;
@@ -107,6 +110,8 @@ class PlanningServiceTest : public ::testing::Test {
     return testing::feed_until(feed, pump, done, limit);
   }
 
+  std::string team_yaml_ = kTeam;
+  std::map<std::string, std::string> extra_arguments_;
   std::unique_ptr<service::ServiceHost> host_;
   std::unique_ptr<highlevel::HighLevelMap> map_;
   std::unique_ptr<transport::Responder> hlmap_;
@@ -161,6 +166,45 @@ TEST_F(PlanningServiceTest, ATeammateFinishingItsRouteTriggersARound) {
         peer_sim_->publish(topics::kTeamPose, pose);
       },
       [&] { return plan_->round() > first; }, std::chrono::milliseconds(5000)));
+}
+
+// A teammate whose services died still stands where it was last heard, and no safety layer
+// reports it any more: once it is silent, our paths keep off the vertices its body and ours
+// could share (e2e 'kill': the survivor drove into the dead robot).
+class SilentTeammateTest : public PlanningServiceTest {
+ protected:
+  SilentTeammateTest() {
+    team_yaml_ = std::string(kTeam) + "  eta_t_s: 1\n";
+    extra_arguments_ = {{"peer-timeout-s", "0.5"}};
+  }
+};
+
+TEST_F(SilentTeammateTest, PathsKeepOffASilentTeammate) {
+  // The teammate is heard at `at`, then falls silent; returns the next path planned after.
+  auto silent_at = [&](const Eigen::Vector3d& at) {
+    v1::RobotPose pose;
+    pose.mutable_pose()->mutable_position_m()->set_x(at.x());
+    pose.mutable_pose()->mutable_position_m()->set_y(at.y());
+    pose.set_state(v1::MOTION_STATE_IDLE);
+    int sent = 0;
+    until([&] { if (sent++ < 5) peer_sim_->publish(topics::kTeamPose, pose); }, [] { return false; },
+          std::chrono::milliseconds(300));
+    until([] {}, [] { return false; }, std::chrono::milliseconds(1200));  // silent for longer than the time-out
+    path_.reset();
+    EXPECT_TRUE(until([] {}, [&] { return path_.has_value(); }, std::chrono::milliseconds(4000)));
+    return path_.value_or(v1::ExecutablePath{});
+  };
+  // Alone (the teammate silent far away), our path; then the teammate dies on it.
+  const v1::ExecutablePath alone = silent_at({28.5, 18.5, 0});
+  ASSERT_GE(alone.waypoints_m_size(), 2);
+  const auto& w = alone.waypoints_m(std::max(1, alone.waypoints_m_size() - 2));
+  const Eigen::Vector3d at(w.x(), w.y(), 0.0);
+  const v1::ExecutablePath after = silent_at(at);
+  ASSERT_GT(after.waypoints_m_size(), 0);
+  const double reach = core::builtin_slugcat().body_half_extents_m.head<2>().norm() +
+                       core::builtin_mr1000().body_half_extents_m.head<2>().norm();
+  for (const auto& p : after.waypoints_m())
+    EXPECT_GE((Eigen::Vector3d(p.x(), p.y(), 0) - at).norm(), reach - 1e-6) << p.x() << ", " << p.y();
 }
 
 }  // namespace
