@@ -116,10 +116,20 @@ struct AlgorithmParams {
   uint64_t seed = 1;
 };
 
+// How a scene given as a mesh file is placed in the world (ignored for built-in scenes): the
+// sim and the station's evaluator must load the same world, so this lives in the team file.
+struct SceneImport {
+  std::string up_axis = "z";  // "z", or "y" for Y-up files: (x, y, z) <- (x, -z, y)
+  double scale = 1.0;         // multiplies coordinates after the up-axis change (0.001: millimetres)
+  double yaw_deg = 0.0;       // rotation about z after scaling
+  Eigen::Vector3d translation_m = Eigen::Vector3d::Zero();  // applied last
+};
+
 // The whole team file.
 struct TeamConfig {
   std::string source_file;               // where it was loaded from, for error messages
   std::string scene = "single-building";
+  SceneImport scene_import;
   std::vector<SpeciesConfig> species;
   std::vector<RobotConfig> robots;
   TransportConfig transport;

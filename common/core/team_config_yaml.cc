@@ -1,5 +1,6 @@
 // YAML reader for TeamConfig. Every key is checked: unknown keys, wrong types and bad values
 // raise ConfigError with the file, the dotted key path and the line, so typos never pass silently.
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -202,12 +203,24 @@ TeamConfig parse_team_config(const std::string& yaml_text, const std::string& or
   }
   Reader r(origin);
   if (!root.IsMap()) throw ConfigError(origin, "", "the team file must be a YAML mapping");
-  r.only_keys(root, "", {"scene", "time_limit_s", "metrics_base_port", "exploration_region", "species", "robots",
-                         "transport", "params"});
+  r.only_keys(root, "", {"scene", "scene_import", "time_limit_s", "metrics_base_port", "exploration_region", "species",
+                         "robots", "transport", "params"});
   TeamConfig c;
   c.source_file = origin;
   r.read(root, "", "scene", c.scene);
   r.read(root, "", "time_limit_s", c.time_limit_s);
+  if (const auto import = root["scene_import"]; import.IsDefined()) {
+    r.only_keys(import, "scene_import", {"up_axis", "scale", "yaw_deg", "translation"});
+    r.read(import, "scene_import", "up_axis", c.scene_import.up_axis);
+    r.read(import, "scene_import", "scale", c.scene_import.scale);
+    r.read(import, "scene_import", "yaw_deg", c.scene_import.yaw_deg);
+    r.read_vec3(import, "scene_import", "translation", c.scene_import.translation_m);
+    if (c.scene_import.up_axis != "z" && c.scene_import.up_axis != "y")
+      r.fail(import["up_axis"], "scene_import.up_axis", "must be z or y, got '" + c.scene_import.up_axis + "'");
+    if (!(c.scene_import.scale > 0.0)) r.fail(import["scale"], "scene_import.scale", "must be > 0");
+    if (std::abs(c.scene_import.yaw_deg) > 360.0)
+      r.fail(import["yaw_deg"], "scene_import.yaw_deg", "must be within [-360, 360]");
+  }
   r.read(root, "", "metrics_base_port", c.metrics_base_port);
   if (const auto region = root["exploration_region"]; region.IsDefined()) {
     r.only_keys(region, "exploration_region", {"min", "max"});

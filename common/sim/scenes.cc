@@ -97,4 +97,13 @@ void floor_debris(MeshBuilder& b, Rng& rng, const Rect& area, int blocks, double
 }
 
 }  // namespace detail
+SceneInfo load_team_scene(const core::TeamConfig& team) {
+  MeshImportOptions import;
+  import.up_axis = parse_up_axis(team.scene_import.up_axis, team.source_file + ": scene_import.up_axis");
+  import.scale = team.scene_import.scale;
+  import.yaw_deg = team.scene_import.yaw_deg;
+  import.translation_m = team.scene_import.translation_m;
+  return load_scene(resolve_scene(team.scene, team.source_file), team.params.seed, import);
+}
+
 }  // namespace hexplore::sim

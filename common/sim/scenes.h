@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "common/core/team_config.h"
 #include "common/sim/mesh_io.h"
 #include "common/sim/triangle_mesh.h"
 
@@ -35,5 +36,9 @@ SceneInfo load_scene(const std::string& name_or_path, uint64_t seed, const MeshI
 // The scene a team file names, ready for load_scene: built-in names unchanged; a relative
 // mesh path is taken relative to the team file's folder when a file exists there.
 std::string resolve_scene(const std::string& scene, const std::string& team_file);
+
+// The team's world: its scene resolved against the team file and placed with the team file's
+// scene_import options. What the sim simulates and the station evaluates. Throws SceneError.
+SceneInfo load_team_scene(const core::TeamConfig& team);
 
 }  // namespace hexplore::sim

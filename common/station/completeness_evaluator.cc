@@ -12,7 +12,7 @@ namespace hexplore::station {
 
 CompletenessEvaluator::CompletenessEvaluator(const core::TeamConfig& team, EvaluatorOptions options)
     : scene_(std::make_unique<sim::SceneInfo>(
-          sim::load_scene(sim::resolve_scene(team.scene, team.source_file), team.params.seed))) {
+          sim::load_team_scene(team))) {
   samples_ = std::make_unique<sim::SurfaceSamples>(
       sim::sample_surface(scene_->mesh, options.sample_spacing_m, team.params.seed, &scene_->site));
   if (options.observable) {

@@ -1,5 +1,5 @@
 // hexplore_sim --config TEAM.yaml --robot ID [--scan-hz 2] [--step-hz 20] [--real-time-factor 1]
-//              [--scene-dir DIR] [--scene-up z|y] [--scene-scale S] [--scene-yaw-deg D]
+//              [--scene-dir DIR]
 #include <memory>
 
 #include "common/service/service.h"

@@ -85,13 +85,9 @@ v1::ScanFrame to_scan_frame(const LidarScan& scan, const Eigen::Isometry3d& body
 
 void SimService::load_world(service::ServiceContext& context) {
   const auto& team = context.team();
-  MeshImportOptions import;
   const auto& args = context.arguments();
-  if (auto it = args.find("scene-up"); it != args.end()) import.up_axis = parse_up_axis(it->second, "--scene-up");
-  import.scale = number_option(context, "scene-scale", 1.0, 1e-6, 1e6);
-  import.yaw_deg = number_option(context, "scene-yaw-deg", 0.0, -360, 360);
   const std::string scene = resolve_scene(team.scene, team.source_file);
-  scene_ = load_scene(scene, team.params.seed, import);
+  scene_ = load_team_scene(team);
   caster_ = std::make_unique<RayCaster>(scene_.mesh);
   if (auto it = args.find("scene-dir"); it != args.end() && is_builtin_scene(scene)) {
     std::filesystem::create_directories(it->second);

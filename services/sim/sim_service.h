@@ -10,7 +10,6 @@
 //   --step-hz N            motion steps and pose messages per sim second (default 20)
 //   --real-time-factor F   sim seconds per wall second (default 1)
 //   --scene-dir DIR        write the generated scene mesh there (created on demand)
-//   --scene-up z|y, --scene-scale S, --scene-yaw-deg D   import options for a mesh-file scene
 
 #include <cstdint>
 #include <map>

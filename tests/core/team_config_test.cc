@@ -116,5 +116,29 @@ TEST(TeamConfig, ExplorationRegionIsReadAndChecked) {
   }
 }
 
+TEST(TeamConfig, SceneImportIsReadAndChecked) {
+  const std::string base = "species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}]\n";
+  EXPECT_EQ(parse_team_config(base, "t").scene_import.up_axis, "z");
+  const auto c = parse_team_config(
+      base + "scene_import: {up_axis: y, scale: 0.001, yaw_deg: 90, translation: [1, 2, 3]}\n", "t");
+  EXPECT_EQ(c.scene_import.up_axis, "y");
+  EXPECT_DOUBLE_EQ(c.scene_import.scale, 0.001);
+  EXPECT_DOUBLE_EQ(c.scene_import.yaw_deg, 90.0);
+  EXPECT_EQ(c.scene_import.translation_m, Eigen::Vector3d(1, 2, 3));
+  const std::pair<const char*, const char*> bad[] = {{"scene_import: {up_axis: x}", "scene_import.up_axis"},
+                                                     {"scene_import: {scale: 0}", "scene_import.scale"},
+                                                     {"scene_import: {yaw_deg: 400}", "scene_import.yaw_deg"},
+                                                     {"scene_import: {shear: 1}", "scene_import.shear"}};
+  for (const auto& [text, key] : bad) {
+    try {
+      parse_team_config(base + text + "\n", "t.yaml");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const ConfigError& e) {
+      EXPECT_EQ(e.key(), key) << text;
+      EXPECT_EQ(e.line(), 3) << text;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hexplore::core

@@ -2,10 +2,12 @@
 
 #include <array>
 #include <filesystem>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
 #include "common/sim/building.h"
+#include "common/sim/mesh_builder.h"
 #include "common/sim/observability.h"
 #include "common/sim/ray_caster.h"
 #include "common/sim/robot_motion.h"
@@ -124,6 +126,26 @@ TEST(Scenes, OsrfCollapsedTownLoadsAndRobotsDrive) {
     EXPECT_EQ(robot.state(), MotionState::kIdle) << species.name << ": " << to_string(robot.block_reason());
     EXPECT_NEAR(robot.odometry_m(), 10.0, 0.05) << species.name;
   }
+}
+
+// A team file's scene_import places a mesh scene the same way for the sim and the evaluator.
+TEST(Scenes, TeamSceneAppliesTheTeamFilesImportOptions) {
+  MeshBuilder b;
+  b.box({0, 0, 0}, {2, 1, 3});  // 2 x 1 x 3, written Y-up below
+  const std::string dir = ::testing::TempDir() + "/team_scene_" + std::to_string(getpid());
+  std::filesystem::create_directories(dir);
+  write_mesh(b.take(), dir + "/box.ply");
+  const std::string yaml = "scene: box.ply\nscene_import: {up_axis: y, scale: 2, translation: [10, 0, 0]}\n"
+                           "species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}]\n";
+  std::ofstream(dir + "/team.yaml") << yaml;
+  const auto scene = load_team_scene(core::load_team_config(dir + "/team.yaml"));
+  // (x, y, z) <- (x, -z, y), then x2, then +10 in x.
+  const Eigen::AlignedBox3f box = scene.mesh.bounds();
+  EXPECT_NEAR(box.min().x(), 10.0f, 1e-4f);
+  EXPECT_NEAR(box.max().x(), 14.0f, 1e-4f);
+  EXPECT_NEAR(box.min().y(), -6.0f, 1e-4f);
+  EXPECT_NEAR(box.max().y(), 0.0f, 1e-4f);
+  EXPECT_NEAR(box.max().z(), 2.0f, 1e-4f);
 }
 
 // The original COLLADA file (inches, Z_UP; assimp applies the unit and turns it Y-up) loads
