@@ -195,13 +195,21 @@ bool SafetyService::stale(int64_t received_ns, int64_t sent_sim_ns) const {
   return context_->now_ns() - received_ns > core::s_to_ns(peer_timeout_s_);
 }
 
-std::vector<Fragment> SafetyService::live_peers() const {
+std::vector<Fragment> SafetyService::peers() const {
   std::vector<Fragment> out;
   for (const auto& [id, peer] : peers_) {
     if (peer.fragment && !stale(peer.fragment_ns, peer.fragment_sim_ns)) {
       out.push_back(*peer.fragment);
-    } else if (peer.pose && !stale(peer.pose_ns, peer.pose_sim_ns)) {
-      out.push_back(fragment_from_pose(id, *peer.pose, resolver_->options().eta_p_m));
+    } else if (peer.pose) {
+      Fragment f = fragment_from_pose(id, *peer.pose, resolver_->options().eta_p_m);
+      if (stale(peer.pose_ns, peer.pose_sim_ns)) {
+        // Silent (radio or services gone): its body is still where it was last seen, and it
+        // is no longer known to move. A stopped box to drive around, never forgotten.
+        f.stationary = true;
+        f.speed_mps = 0.0;
+        f.waypoints_m.clear();
+      }
+      out.push_back(std::move(f));
     }
   }
   return out;
@@ -220,7 +228,7 @@ void SafetyService::cycle() {
     return;
   }
   const Decision decision =
-      resolver_->decide(*position_, desired_, path_speed_mps_, live_peers(), now_s());
+      resolver_->decide(*position_, desired_, path_speed_mps_, peers(), now_s());
   if (decision.yielding_to != last_.yielding_to) {
     // Waiting starts and ends are rare and worth seeing in the log; every decision is not.
     if (decision.yielding_to.empty()) {

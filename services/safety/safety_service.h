@@ -52,7 +52,9 @@ class SafetyService : public service::Service {
   // One decision: resolve, command the driver, share the fragment.
   void cycle();
   void halt(const std::string& reason);
-  std::vector<Fragment> live_peers() const;
+  // Every teammate heard of: its fresh fragment, else a fragment from its pose (a silent
+  // teammate stays, as a stopped box at its last pose).
+  std::vector<Fragment> peers() const;
   // Whether a message received at (wall, sim) is too old to act on.
   bool stale(int64_t received_ns, int64_t sent_sim_ns) const;
   void publish(const v1::MotionCommand& command);

@@ -201,6 +201,31 @@ TEST_F(SafetyServiceTest, TeammateKnownOnlyByItsPoseIsDrivenAround) {
   }
 }
 
+TEST_F(SafetyServiceTest, ASilentTeammateStaysAnObstacleAtItsLastPose) {
+  // r2 (services killed) was last seen standing on r1's path; long after its last message
+  // its body is still there, so r1's approved path must still go around it.
+  v1::RobotPose r2;
+  set(r2.mutable_pose()->mutable_position_m(), 4, 0);
+  r2.mutable_body_half_extents_m()->set_x(0.5);
+  r2.mutable_body_half_extents_m()->set_y(0.35);
+  r2.mutable_body_half_extents_m()->set_z(0.4);
+  const auto own = [&] {
+    send_pose(0, 0);
+    send_path(0, 0, 10, 0);
+  };
+  ASSERT_TRUE(until([&] { own(); peer_sim_->publish(topics::kTeamPose, r2, sim_time_ns_); },
+                    [&] { return following_to(10, 0) && last_motion_->follow().waypoints_m_size() > 2; }));
+  const int64_t last_heard_ns = sim_time_ns_;
+  ASSERT_TRUE(until(own, [&] { return sim_time_ns_ - last_heard_ns > 5'000'000'000 && following_to(10, 0); },
+                    std::chrono::milliseconds(10000)));
+  last_motion_.reset();
+  ASSERT_TRUE(until(own, [&] { return following_to(10, 0); }));
+  EXPECT_GT(last_motion_->follow().waypoints_m_size(), 2);
+  for (const auto& w : last_motion_->follow().waypoints_m()) {
+    EXPECT_GT(std::hypot(w.x() - 4, w.y()), 0.61 + 0.54) << w.x() << "," << w.y();
+  }
+}
+
 TEST_F(SafetyServiceTest, StopMissionHaltsTheRobot) {
   const auto feed = [&] {
     send_pose(0, 0);
