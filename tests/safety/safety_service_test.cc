@@ -119,6 +119,11 @@ class SafetyServiceTest : public ::testing::Test {
     return std::abs(end.x() - x) < 1e-6 && std::abs(end.y() - y) < 1e-6;
   }
   bool stopped() const { return last_motion_ && last_motion_->has_stop(); }
+  // Every approved waypoint keeps both bodies apart from a robot standing at (x, y).
+  void expect_clear_of(double x, double y) const {
+    for (const auto& w : last_motion_->follow().waypoints_m())
+      EXPECT_GT(std::hypot(w.x() - x, w.y() - y), 0.61 + 0.54) << w.x() << "," << w.y();
+  }
 
   std::unique_ptr<service::ServiceHost> host_;
   std::unique_ptr<transport::Publisher> sim_, planning_, peer_, peer_sim_, station_;
@@ -162,6 +167,16 @@ TEST_F(SafetyServiceTest, EmergencyStopHaltsAndRefusesPathsUntilStart) {
   ASSERT_TRUE(until([&] { send_mission(start); feed(); }, [&] { return following_to(10, 0); }));
 }
 
+// r2 (an MR1000 body) standing still at (x, y), as its sim reports it on team/pose.
+v1::RobotPose standing_mr1000(double x, double y) {
+  v1::RobotPose pose;
+  set(pose.mutable_pose()->mutable_position_m(), x, y);
+  pose.mutable_body_half_extents_m()->set_x(0.5);
+  pose.mutable_body_half_extents_m()->set_y(0.35);
+  pose.mutable_body_half_extents_m()->set_z(0.4);
+  return pose;
+}
+
 TEST_F(SafetyServiceTest, YieldsToATeammateArrivingFirst) {
   // r1 drives +x through the origin area; r2 (moving, closer to the crossing) drives +y.
   v1::PathFragment r2;
@@ -185,30 +200,20 @@ TEST_F(SafetyServiceTest, YieldsToATeammateArrivingFirst) {
 
 TEST_F(SafetyServiceTest, TeammateKnownOnlyByItsPoseIsDrivenAround) {
   // r2's safety service is silent; its driver's team/pose shows it standing on r1's path.
-  v1::RobotPose r2;
-  set(r2.mutable_pose()->mutable_position_m(), 4, 0);
-  r2.mutable_body_half_extents_m()->set_x(0.5);
-  r2.mutable_body_half_extents_m()->set_y(0.35);
-  r2.mutable_body_half_extents_m()->set_z(0.4);
+  const v1::RobotPose r2 = standing_mr1000(4, 0);
   const auto feed = [&] {
     send_pose(0, 0);
     send_path(0, 0, 10, 0);
     peer_sim_->publish(topics::kTeamPose, r2, sim_time_ns_);
   };
   ASSERT_TRUE(until(feed, [&] { return following_to(10, 0) && last_motion_->follow().waypoints_m_size() > 2; }));
-  for (const auto& w : last_motion_->follow().waypoints_m()) {
-    EXPECT_GT(std::hypot(w.x() - 4, w.y()), 0.61 + 0.54) << w.x() << "," << w.y();
-  }
+  expect_clear_of(4, 0);
 }
 
 TEST_F(SafetyServiceTest, ASilentTeammateStaysAnObstacleAtItsLastPose) {
   // r2 (services killed) was last seen standing on r1's path; long after its last message
   // its body is still there, so r1's approved path must still go around it.
-  v1::RobotPose r2;
-  set(r2.mutable_pose()->mutable_position_m(), 4, 0);
-  r2.mutable_body_half_extents_m()->set_x(0.5);
-  r2.mutable_body_half_extents_m()->set_y(0.35);
-  r2.mutable_body_half_extents_m()->set_z(0.4);
+  const v1::RobotPose r2 = standing_mr1000(4, 0);
   const auto own = [&] {
     send_pose(0, 0);
     send_path(0, 0, 10, 0);
@@ -221,9 +226,7 @@ TEST_F(SafetyServiceTest, ASilentTeammateStaysAnObstacleAtItsLastPose) {
   last_motion_.reset();
   ASSERT_TRUE(until(own, [&] { return following_to(10, 0); }));
   EXPECT_GT(last_motion_->follow().waypoints_m_size(), 2);
-  for (const auto& w : last_motion_->follow().waypoints_m()) {
-    EXPECT_GT(std::hypot(w.x() - 4, w.y()), 0.61 + 0.54) << w.x() << "," << w.y();
-  }
+  expect_clear_of(4, 0);
 }
 
 TEST_F(SafetyServiceTest, StopMissionHaltsTheRobot) {
