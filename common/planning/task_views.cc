@@ -68,16 +68,21 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
   std::vector<TaskView> views;
   std::unordered_set<uint64_t> covered_ground;
 
-  for (const auto& [key, sv] : ctx.map.supervoxels()) {
-    if (!sv.facade() || sv.covered) continue;
+  // A target outside the exploration region or given up by the team gets no view (counted).
+  auto excluded = [&](uint64_t key, const auto& sv) {
     if (!o.region.contains(sv.center)) {
       ++st.outside_region;
-      continue;
+      return true;
     }
     if (ctx.is_ignored(key)) {
       ++st.ignored;
-      continue;
+      return true;
     }
+    return false;
+  };
+
+  for (const auto& [key, sv] : ctx.map.supervoxels()) {
+    if (!sv.facade() || sv.covered || excluded(key, sv)) continue;
     ++st.facade_targets;
     // Growing search radius: Vis <= 1 / (beta_l * distance), so once the best visible view
     // within r scores at least what any view beyond r could, it is the best within range.
@@ -108,15 +113,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     ++st.facade_views;
   }
   for (const auto& [key, sv] : ctx.map.supervoxels()) {
-    if (!sv.traversable() || sv.covered || covered_ground.count(key)) continue;
-    if (!o.region.contains(sv.center)) {
-      ++st.outside_region;
-      continue;
-    }
-    if (ctx.is_ignored(key)) {
-      ++st.ignored;
-      continue;
-    }
+    if (!sv.traversable() || sv.covered || covered_ground.count(key) || excluded(key, sv)) continue;
     if (!ctx.is_reachable(key)) {
       ++st.unreachable_ground;
       continue;
