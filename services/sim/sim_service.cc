@@ -86,8 +86,8 @@ v1::ScanFrame to_scan_frame(const LidarScan& scan, const Eigen::Isometry3d& body
 void SimService::load_world(service::ServiceContext& context) {
   const auto& team = context.team();
   const auto& args = context.arguments();
-  const std::string scene = resolve_scene(team.scene, team.source_file);
   scene_ = load_team_scene(team);
+  const std::string& scene = scene_.name;  // the resolved name or path
   caster_ = std::make_unique<RayCaster>(scene_.mesh);
   if (auto it = args.find("scene-dir"); it != args.end() && is_builtin_scene(scene)) {
     std::filesystem::create_directories(it->second);

@@ -38,11 +38,9 @@ Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const 
   options.arguments = args.service_arguments;
   options.arguments["results"] = results_dir;
   service::ServiceHost host(team, options);
-  const auto robots = args.robots.empty() ? [&] {
-    std::vector<std::string> all;
-    for (const auto& r : team.robots) all.push_back(r.id);
-    return all;
-  }() : args.robots;
+  std::vector<std::string> robots = args.robots;
+  if (robots.empty())
+    for (const auto& r : team.robots) robots.push_back(r.id);
   for (const auto& robot : robots)
     for (const auto& factory : team::robot_services()) host.add(factory(), robot);
   auto station_owned = std::make_unique<station::StationService>();
