@@ -17,11 +17,10 @@
 #include "common/planning/mnss.h"
 #include "common/planning/rng.h"
 #include "common/planning/robot_vertex.h"
+#include "common/planning/round_inputs.h"
 
 namespace hexplore::planning {
 namespace {
-
-
 
 // A seed every robot derives alike from shared state (the option seed and the cluster ids),
 // so identical maps give identical GA runs whatever each robot's local round counter says.
@@ -66,32 +65,6 @@ std::vector<Route> reference_seed(const MtspProblem& p, const std::vector<uint64
   return routes;
 }
 
-// Ground vertices each species can drive to from where its robots stand (index = species),
-// limited to the exploration region (robots stand inside the site; outside it the ground may
-// end under them) and to vertices with room for the species' body (not, e.g., the ground seen
-// under a vehicle: paths may pass such spots, views may not stand there).
-std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
-                                                           const std::vector<RobotState>& robots, size_t species,
-                                                           const Eigen::AlignedBox3d& region) {
-  std::vector<std::unordered_set<uint64_t>> out(species);
-  for (const auto& r : robots) {
-    const auto start = robot_vertex(graph, r.position, r.species);
-    if (!start || size_t(r.species) >= species) continue;
-    auto& set = out[size_t(r.species)];
-    if (set.count(*start)) continue;  // a teammate of the same species is in the same component
-    for (const auto& [key, d] : graph.distances_from(*start, r.species))
-      if (const auto p = graph.position(key); p && region.contains(*p) && graph.room_to_stand(key, r.species))
-        set.insert(key);
-  }
-  return out;
-}
-
-std::unordered_set<uint64_t> union_of(const std::vector<std::unordered_set<uint64_t>>& sets) {
-  std::unordered_set<uint64_t> all;
-  for (const auto& s : sets) all.insert(s.begin(), s.end());
-  return all;
-}
-
 }  // namespace
 
 ReferenceSolution PlanResult::as_reference(const std::string& source_robot) const {
@@ -119,108 +92,33 @@ void HexplorePlanner::configure(const PlannerContext& context) {
   configured_ = true;
 }
 
-namespace {
-
-// Shortest path a -> b for a species that never enters `avoid` (Dijkstra with a heap).
-std::vector<uint64_t> path_avoiding(const highlevel::TopologyGraph& graph, uint64_t a, uint64_t b, int species,
-                                    const std::unordered_set<uint64_t>& avoid) {
-  using Item = std::pair<double, uint64_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
-  std::unordered_map<uint64_t, double> dist{{a, 0.0}};
-  std::unordered_map<uint64_t, uint64_t> parent;
-  open.push({0.0, a});
-  while (!open.empty()) {
-    const auto [d, k] = open.top();
-    open.pop();
-    if (d > dist[k]) continue;
-    if (k == b) break;
-    for (const auto& [n, w] : graph.neighbours(k)) {
-      if (avoid.count(n) || !graph.passable(n, species)) continue;
-      const double nd = d + w + graph.clearance_penalty(n, species);
-      const auto it = dist.find(n);
-      if (it != dist.end() && it->second <= nd) continue;
-      dist[n] = nd;
-      parent[n] = k;
-      open.push({nd, n});
-    }
-  }
-  if (!dist.count(b)) return {};
-  std::vector<uint64_t> keys{b};
-  while (keys.back() != a) keys.push_back(parent.at(keys.back()));
-  std::reverse(keys.begin(), keys.end());
-  return keys;
-}
-
-}  // namespace
-
-ExecutablePlan executable_path(const highlevel::TopologyGraph& graph, const Eigen::Vector3d& from, int species,
-                               const TaskView& goal, const std::unordered_set<uint64_t>* avoid) {
-  ExecutablePlan out;
-  out.goal = goal;
-  auto start = robot_vertex(graph, from, species);
-  if (!start) return out;
-  const bool avoiding = avoid && !avoid->empty();
-  if (avoiding && avoid->count(goal.ground_key)) return out;
-  if (avoiding && avoid->count(*start)) {
-    // Standing next to a vertex we cannot pass: leave from the nearest neighbour we can.
-    std::optional<uint64_t> best;
-    double bd = std::numeric_limits<double>::infinity();
-    for (const auto& [n, w] : graph.neighbours(*start)) {
-      const auto p = graph.position(n);
-      if (avoid->count(n) || !graph.passable(n, species) || !p) continue;
-      const double d = (*p - from).norm();
-      if (d < bd) bd = d, best = n;
-    }
-    if (!best) return out;
-    start = best;
-  }
-  const auto keys = avoiding ? path_avoiding(graph, *start, goal.ground_key, species, *avoid)
-                             : graph.path(*start, goal.ground_key, species);
-  if (keys.empty()) return out;
-  // Through each vertex where the species' body clears the obstacles the map knows around it.
-  for (uint64_t k : keys)
-    if (auto p = graph.waypoint(k, species)) {
-      out.waypoints.push_back(*p);
-      out.keys.push_back(k);
-    }
-  out.valid = true;
-  return out;
-}
-
 PlanResult HexplorePlanner::plan(const PlanRequest& req) {
-  const BudgetClock clock = context_.options.cpu_clock ? BudgetClock::kThreadCpu : BudgetClock::kWall;
-  auto now = [clock] { return budget_clock_ns(clock); };
   if (!configured_) throw std::logic_error(name() + ": plan() before configure()");
-  if (!req.map) throw std::invalid_argument(name() + ": no map in the request");
-  if (req.self < 0 || size_t(req.self) >= req.robots.size())
-    throw std::invalid_argument(name() + ": self index " + std::to_string(req.self) + " outside the team");
-  for (const auto& r : req.robots)
-    if (r.species < 0 || size_t(r.species) >= context_.team.species.size())
-      throw std::invalid_argument(name() + ": robot '" + r.id + "' has unknown species index " + std::to_string(r.species));
+  check_request(name(), req, context_.team);
   const TeamCapabilities team = ablation_ == Ablation::kNoHetero ? context_.team.homogeneous() : context_.team;
   if (ablation_ == Ablation::kNoAssign) return plan_voronoi(req, team);
 
   const PlannerOptions& o = context_.options;
-  const int64_t t0 = now();
+  StageClock clock(o);
   PlanResult out;
   out.round = req.round;
   out.planner = name();
 
   // Task views, standing only where some robot can drive to.
   const highlevel::TopologyGraph& graph = req.map->graph();
-  const auto reach = reachable_ground(graph, req.robots, context_.team.species.size(), o.region);
-  const MapContext ctx(*req.map, o, union_of(reach), &req.ignored);
-  const std::vector<TaskView> views = generate_task_views(ctx, team, o, &out.view_stats);
+  const RoundInputs in = prepare_round(req, team, o);
+  const MapContext& ctx = *in.context;
+  const auto& reach = in.reachable;
+  const std::vector<TaskView>& views = in.views;
+  out.view_stats = in.stats;
   out.views = int(views.size());
-  const int64_t t1 = now();
-  out.times.views_s = core::ns_to_s(t1 - t0);
+  out.times.views_s = clock.lap();
 
   // Clustering.
   const std::vector<TaskCluster> clusters =
       ablation_ == Ablation::kNoCluster ? singleton_clusters(views) : cluster_views(views, o.eta_r_m);
   out.clusters = int(clusters.size());
-  const int64_t t2 = now();
-  out.times.clustering_s = core::ns_to_s(t2 - t1);
+  out.times.clustering_s = clock.lap();
 
   // Assignment.
   const AssignmentInstance inst = build_assignment(graph, views, clusters, team, req.robots);
@@ -245,15 +143,14 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
     ga.time_budget_s = o.ga_time_budget_s;
     ga.seed = shared_seed(o.seed, city_ids);
     ga.local_search = o.ga_memetic ? LocalSearchMode::kMemetic : LocalSearchMode::kNone;
-    ga.budget_clock = clock;
+    ga.budget_clock = o.cpu_clock ? BudgetClock::kThreadCpu : BudgetClock::kWall;
     if (ref) ga.seeds.push_back(reference_seed(inst.problem, city_ids, *ref, req.robots));
     const GaResult result = solve_ga(model, ga);
     routes = result.routes;
     out.fitness = result.breakdown.fitness;
     out.ga_generations = result.generations;
   }
-  const int64_t t3 = now();
-  out.times.assignment_s = core::ns_to_s(t3 - t2);
+  out.times.assignment_s = clock.lap();
 
   // Team solution: cluster sequences, lengths and costs.
   std::unordered_map<uint64_t, std::string> ref_owner;
@@ -308,28 +205,25 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
     }
     tour.insert(tour.end(), part.begin(), part.end());
   }
-  const int64_t t4 = now();
-  out.times.mnss_s = core::ns_to_s(t4 - t3);
-  if (!tour.empty()) out.path = executable_path(graph, me.position, me.species, tour.front());
-  out.times.total_s = core::ns_to_s(now() - t0);
+  out.times.mnss_s = clock.lap();
+  out.times.total_s = clock.total();
   return out;
 }
 
 PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapabilities& team) {
-  const BudgetClock clock = context_.options.cpu_clock ? BudgetClock::kThreadCpu : BudgetClock::kWall;
-  auto now = [clock] { return budget_clock_ns(clock); };
   const PlannerOptions& o = context_.options;
-  const int64_t t0 = now();
+  StageClock clock(o);
   PlanResult out;
   out.round = req.round;
   out.planner = name();
   const highlevel::TopologyGraph& graph = req.map->graph();
-  const auto reach = reachable_ground(graph, req.robots, context_.team.species.size(), o.region);
-  const MapContext ctx(*req.map, o, union_of(reach), &req.ignored);
-  const std::vector<TaskView> views = generate_task_views(ctx, team, o, &out.view_stats);
+  const RoundInputs in = prepare_round(req, team, o);
+  const MapContext& ctx = *in.context;
+  const auto& reach = in.reachable;
+  const std::vector<TaskView>& views = in.views;
+  out.view_stats = in.stats;
   out.views = int(views.size());
-  const int64_t t1 = now();
-  out.times.views_s = core::ns_to_s(t1 - t0);
+  out.times.views_s = clock.lap();
 
   // Dynamic Voronoi partition: each view goes to the nearest (graph distance) robot whose
   // species may take it; ties to the lower robot index.
@@ -349,8 +243,7 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
     if (best >= 0) owned[size_t(best)].push_back(int(v));
     else ++out.dropped_clusters;
   }
-  const int64_t t2 = now();
-  out.times.assignment_s = core::ns_to_s(t2 - t1);
+  out.times.assignment_s = clock.lap();
 
   out.robots.resize(R);
   Rng rng(mix_seed(o.seed, views.size()));
@@ -375,12 +268,8 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
   }
   out.clusters = int(views.size()) - out.dropped_clusters;
   out.open_views = out.clusters;
-  out.times.mnss_s = core::ns_to_s(now() - t2);
-  const RobotPlan& me = out.robots[size_t(req.self)];
-  if (!me.route.empty())
-    out.path = executable_path(graph, req.robots[size_t(req.self)].position, req.robots[size_t(req.self)].species,
-                               me.route.front());
-  out.times.total_s = core::ns_to_s(now() - t0);
+  out.times.mnss_s = clock.lap();
+  out.times.total_s = clock.total();
   return out;
 }
 

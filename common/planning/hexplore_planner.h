@@ -3,7 +3,6 @@
 // clustering -> HMDMTSP assignment (GA) -> MNSS tours -> executable path.
 
 #include <string>
-#include <unordered_set>
 
 #include "common/planning/planner.h"
 
@@ -30,13 +29,5 @@ class HexplorePlanner : public Planner {
   PlannerContext context_;
   bool configured_ = false;
 };
-
-// The executable path from `from` to the goal view along the topology graph for a species,
-// through each vertex's clearance waypoint (TopologyGraph::waypoint) and preferring vertices
-// with room for the body (clearance costs, when the graph has body radii).
-// `avoid` (optional): vertices the robot found it cannot pass (blocked there); the path goes
-// around them, or is invalid when it cannot.
-ExecutablePlan executable_path(const highlevel::TopologyGraph& graph, const Eigen::Vector3d& from, int species,
-                               const TaskView& goal, const std::unordered_set<uint64_t>* avoid = nullptr);
 
 }  // namespace hexplore::planning

@@ -59,7 +59,6 @@ struct PlanResult {
   uint64_t round = 0;
   std::string planner;
   std::vector<RobotPlan> robots;  // same order as PlanRequest::robots
-  ExecutablePlan path;            // for the planning robot
   double fitness = 0.0;
   int ga_generations = 0;
   int views = 0;

@@ -9,6 +9,7 @@
 #include "common/core/log.h"
 #include "common/highlevel/proto_convert.h"
 #include "common/highlevel/supervoxel.h"
+#include "common/planning/executable_path.h"
 #include "common/planning/hexplore_planner.h"
 #include "common/planning/plan_proto.h"
 #include "common/transport/topics.h"

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "common/core/team_config.h"
+#include "common/planning/executable_path.h"
 #include "common/planning/hexplore_planner.h"
 #include "common/planning/planner_registry.h"
 #include "common/planning/robot_vertex.h"

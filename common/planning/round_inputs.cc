@@ -1,0 +1,73 @@
+#include "common/planning/round_inputs.h"
+
+#include <stdexcept>
+
+#include "common/core/clock.h"
+#include "common/planning/local_search.h"
+#include "common/planning/robot_vertex.h"
+
+namespace hexplore::planning {
+namespace {
+
+std::unordered_set<uint64_t> union_of(const std::vector<std::unordered_set<uint64_t>>& sets) {
+  std::unordered_set<uint64_t> all;
+  for (const auto& s : sets) all.insert(s.begin(), s.end());
+  return all;
+}
+
+}  // namespace
+
+void check_request(const std::string& planner, const PlanRequest& req, const TeamCapabilities& team) {
+  if (!req.map) throw std::invalid_argument(planner + ": no map in the request");
+  if (req.self < 0 || size_t(req.self) >= req.robots.size())
+    throw std::invalid_argument(planner + ": self index " + std::to_string(req.self) + " outside the team");
+  for (const auto& r : req.robots)
+    if (r.species < 0 || size_t(r.species) >= team.species.size())
+      throw std::invalid_argument(planner + ": robot '" + r.id + "' has unknown species index " +
+                                  std::to_string(r.species));
+}
+
+// Limited to the exploration region (robots stand inside the site; outside it the ground may
+// end under them) and to vertices with room for the species' body (not, e.g., the ground seen
+// under a vehicle: paths may pass such spots, views may not stand there).
+std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
+                                                           const std::vector<RobotState>& robots, size_t species,
+                                                           const Eigen::AlignedBox3d& region) {
+  std::vector<std::unordered_set<uint64_t>> out(species);
+  for (const auto& r : robots) {
+    const auto start = robot_vertex(graph, r.position, r.species);
+    if (!start || size_t(r.species) >= species) continue;
+    auto& set = out[size_t(r.species)];
+    if (set.count(*start)) continue;  // a teammate of the same species is in the same component
+    for (const auto& [key, d] : graph.distances_from(*start, r.species))
+      if (const auto p = graph.position(key); p && region.contains(*p) && graph.room_to_stand(key, r.species))
+        set.insert(key);
+  }
+  return out;
+}
+
+RoundInputs prepare_round(const PlanRequest& req, const TeamCapabilities& view_team, const PlannerOptions& o) {
+  RoundInputs in;
+  in.reachable = reachable_ground(req.map->graph(), req.robots, view_team.species.size(), o.region);
+  in.context = std::make_unique<MapContext>(*req.map, o, union_of(in.reachable), &req.ignored);
+  in.views = generate_task_views(*in.context, view_team, o, &in.stats);
+  return in;
+}
+
+StageClock::StageClock(const PlannerOptions& options)
+    : cpu_(options.cpu_clock),
+      start_ns_(budget_clock_ns(cpu_ ? BudgetClock::kThreadCpu : BudgetClock::kWall)),
+      last_ns_(start_ns_) {}
+
+double StageClock::lap() {
+  const int64_t now = budget_clock_ns(cpu_ ? BudgetClock::kThreadCpu : BudgetClock::kWall);
+  const double s = core::ns_to_s(now - last_ns_);
+  last_ns_ = now;
+  return s;
+}
+
+double StageClock::total() const {
+  return core::ns_to_s(budget_clock_ns(cpu_ ? BudgetClock::kThreadCpu : BudgetClock::kWall) - start_ns_);
+}
+
+}  // namespace hexplore::planning

@@ -1,0 +1,55 @@
+#pragma once
+// What every planner shares in a round (BASELINES.md "same machinery"): the request checked
+// against the team, the ground each species can drive to, the map context (occlusion grid,
+// ground index, given-up targets) and the task views with their requirements and labels.
+// Planners differ only in what they do with these.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "common/planning/capabilities.h"
+#include "common/planning/planning_types.h"
+#include "common/planning/task_views.h"
+
+namespace hexplore::planning {
+
+struct RoundInputs {
+  // Ground vertices each species can drive to from where its robots stand (index = species),
+  // inside the exploration region and with room for the species' body.
+  std::vector<std::unordered_set<uint64_t>> reachable;
+  std::unique_ptr<MapContext> context;  // views stand only on ground some robot reaches
+  std::vector<TaskView> views;          // ascending key order
+  ViewGenerationStats stats;
+};
+
+// Throws std::invalid_argument (naming `planner`) when the request has no map, its self
+// index is outside the team, or a robot's species is not one of `team`'s.
+void check_request(const std::string& planner, const PlanRequest& request, const TeamCapabilities& team);
+
+// Reachable ground, map context and task views of one round. `view_team` decides view
+// requirements and labels (the no-hetero ablation passes the homogeneous team).
+RoundInputs prepare_round(const PlanRequest& request, const TeamCapabilities& view_team, const PlannerOptions& options);
+
+// Ground vertices each species can drive to from its robots' positions (see RoundInputs).
+std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
+                                                           const std::vector<RobotState>& robots, size_t species,
+                                                           const Eigen::AlignedBox3d& region);
+
+// Stage timing on the planner's clock (wall time in services, thread CPU time in benchmarks).
+class StageClock {
+ public:
+  explicit StageClock(const PlannerOptions& options);
+  // Seconds since the previous lap (or construction).
+  double lap();
+  double total() const;
+
+ private:
+  bool cpu_;
+  int64_t start_ns_;
+  int64_t last_ns_;
+};
+
+}  // namespace hexplore::planning
