@@ -20,14 +20,16 @@ void ContributionLog::record(const SupervoxelSegmenter& segmenter, const Segment
 }
 
 bool ContributionLog::significant(const Supervoxel& p, const Supervoxel& n) const {
-  if (p.covered != n.covered || p.traversal_requirement != n.traversal_requirement || p.surface != n.surface) {
+  if (p.covered != n.covered || p.traversal_requirement != n.traversal_requirement || p.surface != n.surface ||
+      p.gap != n.gap) {
     return true;
   }
   if ((p.center - n.center).norm() > tolerance_.center_m) return true;
   const double cos_angle = std::clamp(p.normal.dot(n.normal), -1.0, 1.0);
   if (std::acos(cos_angle) > tolerance_.normal_deg * M_PI / 180.0) return true;
   const double count = std::max(1, p.voxel_count);
-  return std::abs(n.voxel_count - p.voxel_count) > tolerance_.voxel_count_ratio * count;
+  return std::abs(n.voxel_count - p.voxel_count) > tolerance_.voxel_count_ratio * count ||
+         std::abs(n.covered_voxels - p.covered_voxels) > tolerance_.voxel_count_ratio * count;
 }
 
 SourcedUpdate ContributionLog::take_increment() {

@@ -60,6 +60,19 @@ Supervoxel fuse(const std::vector<const Supervoxel*>& reports) {
   out.center = center / static_cast<double>(reports.size());
   out.normal = normal.norm() > 0.0 ? Eigen::Vector3d(normal.normalized()) : Eigen::Vector3d::UnitZ();
   out.traversal_requirement = na ? 0 : requirement;
+  // Coverage is OR: complete when any source completed it. Otherwise the source that got
+  // furthest (largest complete fraction; ties: the first source) tells how far and why not.
+  if (out.covered) {
+    out.covered_voxels = out.voxel_count;
+    out.gap = core::CoverageGap::kNone;
+  } else {
+    const Supervoxel* best = reports.front();
+    auto fraction = [](const Supervoxel* s) { return double(s->covered_voxels) / std::max(1, s->voxel_count); };
+    for (const Supervoxel* r : reports)
+      if (fraction(r) > fraction(best)) best = r;
+    out.covered_voxels = best->covered_voxels;
+    out.gap = best->gap;
+  }
   return out;
 }
 

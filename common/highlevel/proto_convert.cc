@@ -1,5 +1,7 @@
 #include "common/highlevel/proto_convert.h"
 
+#include <algorithm>
+
 namespace hexplore::highlevel {
 namespace {
 
@@ -65,6 +67,7 @@ VoxelSample from_proto(const v1::Voxel& v) {
   s.normal = Eigen::Vector3f(v.normal_x(), v.normal_y(), v.normal_z());
   s.flags = v.flags();
   s.low_risk_species_mask = v.low_risk_species_mask();
+  s.gap = core::coverage_gap_from_wire(uint32_t(v.coverage_gap()));
   return s;
 }
 
@@ -87,6 +90,7 @@ void to_proto(const VoxelSample& v, v1::Voxel* out) {
   out->set_normal_z(v.normal.z());
   out->set_flags(v.flags);
   out->set_low_risk_species_mask(v.low_risk_species_mask);
+  out->set_coverage_gap(static_cast<v1::CoverageGap>(v.gap));
 }
 
 Supervoxel from_proto(const v1::Supervoxel& s) {
@@ -99,6 +103,8 @@ Supervoxel from_proto(const v1::Supervoxel& s) {
   sv.surface = static_cast<SurfaceClass>(s.surface());
   if (sv.surface == SurfaceClass::kUnspecified) sv.surface = surface_of_key(sv.key);
   sv.voxel_count = static_cast<int>(s.voxel_count());
+  sv.covered_voxels = sv.covered ? sv.voxel_count : static_cast<int>(std::min(s.covered_voxels(), s.voxel_count()));
+  sv.gap = sv.covered ? core::CoverageGap::kNone : core::coverage_gap_from_wire(uint32_t(s.coverage_gap()));
   return sv;
 }
 
@@ -116,6 +122,10 @@ void to_proto(const Supervoxel& s, v1::Supervoxel* out) {
   out->set_traversal_requirement(static_cast<uint32_t>(std::max(0, s.traversal_requirement)));
   out->set_surface(static_cast<v1::SurfaceClass>(s.surface));
   out->set_voxel_count(static_cast<uint32_t>(std::max(0, s.voxel_count)));
+  if (!s.covered) {
+    out->set_covered_voxels(static_cast<uint32_t>(std::max(0, s.covered_voxels)));
+    out->set_coverage_gap(static_cast<v1::CoverageGap>(s.gap));
+  }
 }
 
 v1::MapIncrement to_increment(const SourcedUpdate& inc, const Contribution& current) {

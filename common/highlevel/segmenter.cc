@@ -45,6 +45,7 @@ void SupervoxelSegmenter::Stats::add(const VoxelSample& v, int sign, size_t spec
   if (low_risk.size() < species) low_risk.resize(species, 0);
   count += sign;
   if (v.covered()) covered += sign;
+  else gaps[size_t(v.gap)] += sign;
   for (int i = 0; i < 3; ++i) {
     mean_um[i] += sign * std::llround(double{v.mean[i]} * 1e6);
     normal_u[i] += sign * std::llround(double{v.normal[i]} * 1e6);
@@ -58,6 +59,7 @@ void SupervoxelSegmenter::Stats::add(const Stats& s) {
   if (low_risk.size() < s.low_risk.size()) low_risk.resize(s.low_risk.size(), 0);
   count += s.count;
   covered += s.covered;
+  for (int g = 0; g < core::kCoverageGapCount; ++g) gaps[g] += s.gaps[g];
   for (int i = 0; i < 3; ++i) {
     mean_um[i] += s.mean_um[i];
     normal_u[i] += s.normal_u[i];
@@ -352,6 +354,13 @@ Supervoxel SupervoxelSegmenter::aggregate(uint64_t group) const {
                                static_cast<double>(total.normal_u[2]));
   sv.normal = normal.norm() > 0.0 ? Eigen::Vector3d(normal.normalized()) : Eigen::Vector3d::UnitZ();
   sv.covered = total.covered == total.count;
+  sv.covered_voxels = static_cast<int>(total.covered);
+  if (!sv.covered) {
+    int best = 0;  // kNone: incomplete voxels that gave no reason (from an old peer)
+    for (int g = 1; g < core::kCoverageGapCount; ++g)
+      if (total.gaps[g] > total.gaps[best]) best = g;
+    sv.gap = core::CoverageGap(best);
+  }
   uint32_t mask = 0;
   for (size_t k = 0; k < total.low_risk.size() && k < 32; ++k) {
     if (total.low_risk[k] == total.count) mask |= 1u << k;

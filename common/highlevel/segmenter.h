@@ -72,6 +72,7 @@ class SupervoxelSegmenter {
     int64_t mean_um[3] = {0, 0, 0};    // sum of Gaussian means, micrometres
     int64_t normal_u[3] = {0, 0, 0};   // sum of normals, 1e-6 units
     std::vector<int64_t> low_risk;     // per species: voxels low-risk for it
+    int64_t gaps[core::kCoverageGapCount] = {};  // voxels per coverage gap
     void add(const VoxelSample& v, int sign, size_t species);
     void add(const Stats& s);
   };

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "common/core/coverage_gap.h"
 #include "common/core/seed_key.h"
 
 namespace hexplore::core {
@@ -41,6 +42,10 @@ struct Supervoxel {
   int traversal_requirement = 0;  // lowest capability level with all voxels low-risk; 0 = N/A
   SurfaceClass surface = SurfaceClass::kUnspecified;
   int voxel_count = 0;
+  // Incomplete supervoxels: how many voxels are complete, and the most common reason of the
+  // others (ties: the lower core::CoverageGap). Covered ones: voxel_count and kNone.
+  int covered_voxels = 0;
+  core::CoverageGap gap = core::CoverageGap::kNone;
 
   bool ground() const { return surface == SurfaceClass::kGround; }
   bool facade() const { return surface == SurfaceClass::kFacade; }

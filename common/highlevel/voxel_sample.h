@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "common/core/coverage_gap.h"
 #include "common/core/seed_key.h"
 
 namespace hexplore::highlevel {
@@ -24,6 +25,7 @@ struct VoxelSample {
   Eigen::Vector3f normal = Eigen::Vector3f::UnitZ(); // unit surface normal
   uint32_t flags = 0;                            // VoxelFlag bits
   uint32_t low_risk_species_mask = 0;            // bit k: low risk for species index k
+  core::CoverageGap gap = core::CoverageGap::kNone;  // why it is not covered
 
   bool removed() const { return (flags & kVoxelRemoved) != 0; }
   bool covered() const { return (flags & kVoxelCovered) != 0; }

@@ -11,7 +11,8 @@ namespace hexplore::perception {
 namespace {
 
 constexpr char kMagic[8] = {'H', 'X', 'P', 'M', 'A', 'P', '\r', '\n'};  // \r\n catches text-mode mangling
-constexpr uint32_t kVersion = 1;
+// 2: VoxelData keeps failed-observation minima and the published coverage gap.
+constexpr uint32_t kVersion = 2;
 
 struct FileHeader {
   char magic[8];

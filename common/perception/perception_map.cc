@@ -228,12 +228,37 @@ void PerceptionMap::update_observation(VoxelData& d, const Eigen::Vector3d& cent
   d.normal(n);
   const double cosine = std::abs(view.dot(Eigen::Vector3d(n[0], n[1], n[2]))) / distance;
   const double angle_deg = std::acos(std::clamp(cosine, 0.0, 1.0)) * kRadToDeg;
+  const auto angle_cdeg = static_cast<uint16_t>(std::lround(angle_deg * 100.0));
+  const auto distance_cm = static_cast<uint16_t>(std::min<long>(0xFFFE, std::lround(distance * 100.0)));
   // Only observations inside both thresholds count (paper: gamma(v), l(v) are minima among them).
-  if (angle_deg >= angle_threshold_deg(n) || distance >= params_.l_th_m) return;
+  if (angle_deg >= angle_threshold_deg(n) || distance >= params_.l_th_m) {
+    // Until one qualifies, the minima of the failed ones say which threshold is in the way.
+    if (!d.has_observation()) {
+      d.obs_angle_cdeg = std::min(d.obs_angle_cdeg, angle_cdeg);
+      d.obs_distance_cm = std::min(d.obs_distance_cm, distance_cm);
+    }
+    return;
+  }
+  if (!d.has_observation()) d.obs_angle_cdeg = d.obs_distance_cm = kNoObservation;  // forget the failed ones
   d.obs_points = static_cast<uint16_t>(std::min<uint32_t>(0xFFFF, d.obs_points + points));
-  d.obs_angle_cdeg = std::min<uint16_t>(d.obs_angle_cdeg, static_cast<uint16_t>(std::lround(angle_deg * 100.0)));
-  d.obs_distance_cm =
-      std::min<uint16_t>(d.obs_distance_cm, static_cast<uint16_t>(std::min<long>(0xFFFE, std::lround(distance * 100.0))));
+  d.obs_angle_cdeg = std::min(d.obs_angle_cdeg, angle_cdeg);
+  d.obs_distance_cm = std::min(d.obs_distance_cm, distance_cm);
+}
+
+core::CoverageGap PerceptionMap::coverage_gap(const VoxelData& d) const {
+  if (!d.has_normal()) return core::CoverageGap::kNoNormal;
+  float n[3];
+  d.normal(n);
+  const double angle_th = angle_threshold_deg(n);
+  if (!d.has_observation()) {
+    // Failed observations only (their minima); no observation at all since the normal: angle.
+    if (d.obs_angle_cdeg != kNoObservation && d.obs_angle_cdeg / 100.0 < angle_th) return core::CoverageGap::kDistance;
+    return core::CoverageGap::kAngle;
+  }
+  // The threshold follows the current normal (ground or facade), which may have turned since.
+  if (d.obs_angle_cdeg / 100.0 >= angle_th) return core::CoverageGap::kAngle;
+  if (d.obs_points * params_.density_per_point() <= params_.rho_th) return core::CoverageGap::kDensity;
+  return core::CoverageGap::kNone;
 }
 
 double PerceptionMap::angle_threshold_deg(const float normal[3]) const {
@@ -247,13 +272,13 @@ void PerceptionMap::refresh_state(const octomap::OcTreeKey& key, VoxelData& d, N
   const bool ground = d.has_normal() && slope_deg(n) < params_.s_th_deg;
   uint32_t mask = 0;
   if (ground) mask = low_risk_mask(sample_terrain(key, d, lookup, centre, window_, params_), params_);
-  const double density = d.obs_points * params_.density_per_point();
-  const bool covered = d.has_observation() && density > params_.rho_th &&
-                       d.obs_angle_cdeg / 100.0 < angle_threshold_deg(n) && d.obs_distance_cm / 100.0 < params_.l_th_m;
+  const core::CoverageGap gap = coverage_gap(d);
+  const bool covered = gap == core::CoverageGap::kNone;
   const uint8_t flags = static_cast<uint8_t>((ground ? kFlagGround : 0) | (covered ? kFlagCovered : 0) |
                                              (mask != 0 ? kFlagTraversable : 0));
   const bool changed = (d.flags & kPublishedFlagsMask) != flags || d.low_risk_mask != mask ||
-                       (d.flags & kFlagWasPublished) == 0 || published_state_moved(d, centre);
+                       d.pub_gap != uint8_t(gap) || (d.flags & kFlagWasPublished) == 0 ||
+                       published_state_moved(d, centre);
   d.flags = static_cast<uint8_t>((d.flags & ~kPublishedFlagsMask) | flags);
   d.low_risk_mask = mask;
   if (changed && (d.flags & kFlagChangePending) == 0) {
@@ -304,6 +329,7 @@ VoxelView PerceptionMap::view_of(const octomap::OcTreeKey& key, const VoxelData&
     v.observation_distance_m = d.obs_distance_cm / 100.0;
   }
   v.observation_density = d.obs_points * params_.density_per_point();
+  v.coverage_gap = coverage_gap(d);
   v.flags = d.flags & kPublishedFlagsMask;
   v.low_risk_species_mask = d.low_risk_mask;
   return v;
@@ -339,6 +365,7 @@ std::vector<VoxelView> PerceptionMap::take_changes() {
     if (node == nullptr) continue;
     VoxelData& d = node->data();
     out.push_back(view_of(key, d));
+    d.pub_gap = uint8_t(out.back().coverage_gap) & 0x7;
     const Eigen::Vector3d centre = centre_of(key);
     const Eigen::Vector3d offset = voxel_mean(d, centre) - centre;
     for (int a = 0; a < 3; ++a) {

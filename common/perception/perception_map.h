@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include "common/core/coverage_gap.h"
 #include "common/perception/flat_key_map.h"
 #include "common/perception/map_params.h"
 #include "common/perception/neighbour_lookup.h"
@@ -111,6 +112,8 @@ class PerceptionMap {
   void update_observation(VoxelData& d, const Eigen::Vector3d& centre, const Eigen::Vector3d& sensor,
                           uint32_t points) const;
   void refresh_state(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLookup& lookup);
+  // Why the voxel is not a CSE yet (kNone when it is): the first unmet term of eq. 2.
+  core::CoverageGap coverage_gap(const VoxelData& d) const;
   // gamma_th for a voxel with this normal: the ground threshold below s_th, else the facade one.
   double angle_threshold_deg(const float normal[3]) const;
   bool published_state_moved(const VoxelData& d, const Eigen::Vector3d& centre) const;

@@ -29,11 +29,15 @@ struct VoxelData {
   float sum_sq[6] = {0.f, 0.f, 0.f, 0.f, 0.f, 0.f};  // xx xy xz yy yz zz
   uint32_t count = 0;
   int16_t normal_q[3] = {0, 0, 0};            // unit normal * 32767; all zero: no normal yet
-  uint16_t obs_angle_cdeg = kNoObservation;    // min qualifying observation angle, 0.01 deg
-  uint16_t obs_distance_cm = kNoObservation;   // min qualifying observation distance, cm
+  // Minimum angle and distance of the qualifying observations (both thresholds met); while
+  // none qualified (obs_points == 0), the minima of the failed ones, which tell the coverage
+  // gap (angle or distance, core::CoverageGap).
+  uint16_t obs_angle_cdeg = kNoObservation;    // 0.01 deg
+  uint16_t obs_distance_cm = kNoObservation;   // cm
   uint16_t obs_points = 0;                     // points of qualifying observations (saturating)
   uint32_t low_risk_mask = 0;                  // bit k: R_k(v) = 0
-  uint8_t empty_neighbours = 26;               // of the 26 neighbour cells
+  uint8_t empty_neighbours : 5 = 26;           // of the 26 neighbour cells
+  uint8_t pub_gap : 3 = 0;                     // last published core::CoverageGap
   uint8_t flags = 0;
   int8_t pub_mean_q[3] = {0, 0, 0};            // last published mean offset, resolution / 254
   int8_t pub_normal_q[3] = {0, 0, 0};          // last published normal * 127

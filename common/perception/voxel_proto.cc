@@ -41,6 +41,7 @@ void to_proto(const VoxelView& v, v1::Voxel* out) {
   out->set_normal_z(v.normal.z());
   out->set_flags(v.flags);
   out->set_low_risk_species_mask(v.low_risk_species_mask);
+  out->set_coverage_gap(static_cast<v1::CoverageGap>(v.coverage_gap));
 }
 
 v1::VoxelDelta to_voxel_delta(const std::vector<VoxelView>& voxels, double resolution_m, bool full_snapshot) {

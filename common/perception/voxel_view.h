@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "common/core/coverage_gap.h"
 #include "common/perception/voxel_data.h"
 #include "common/perception/voxel_octree.h"
 
@@ -24,6 +25,7 @@ struct VoxelView {
   double observation_angle_deg = 180.0;                      // gamma(v)
   double observation_distance_m = 1.0e9;                     // l(v)
   double observation_density = 0.0;                          // rho(v), points per cm^2
+  core::CoverageGap coverage_gap = core::CoverageGap::kNoNormal;  // why not a CSE (kNone: it is)
   uint8_t flags = 0;                                         // kFlagGround | kFlagCovered | kFlagTraversable
   uint32_t low_risk_species_mask = 0;                        // bit k: R_k(v) = 0
 

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "common/highlevel/high_level_map.h"
+#include "common/planning/give_up_ledger.h"
 #include "common/planning/reference.h"
 #include "common/planning/task_views.h"
 
@@ -27,7 +28,7 @@ struct PlanRequest {
   int self = 0;                                // index of the planning robot in `robots`
   std::vector<ReferenceSolution> shared;       // teammates' (and own) previous solutions
   uint64_t round = 0;
-  std::unordered_set<uint64_t> ignored;        // ISE supervoxels given up on: no view for them
+  const GiveUpLedger* given_up = nullptr;      // ISE supervoxels the team gave up on: no view for them
 };
 
 // One robot's part of the team solution.

@@ -46,11 +46,12 @@ std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::Topo
   return out;
 }
 
-RoundInputs prepare_round(const PlanRequest& req, const TeamCapabilities& view_team, const PlannerOptions& o) {
+RoundInputs prepare_round(const PlanRequest& req, const TeamCapabilities& view_team, const PlannerOptions& o,
+                          bool record_targets) {
   RoundInputs in;
   in.reachable = reachable_ground(req.map->graph(), req.robots, view_team.species.size(), o.region);
-  in.context = std::make_unique<MapContext>(*req.map, o, union_of(in.reachable), &req.ignored);
-  in.views = generate_task_views(*in.context, view_team, o, &in.stats);
+  in.context = std::make_unique<MapContext>(*req.map, o, union_of(in.reachable), req.given_up);
+  in.views = generate_task_views(*in.context, view_team, o, &in.stats, record_targets ? &in.targets : nullptr);
   return in;
 }
 

@@ -23,6 +23,7 @@ struct RoundInputs {
   std::unique_ptr<MapContext> context;  // views stand only on ground some robot reaches
   std::vector<TaskView> views;          // ascending key order
   ViewGenerationStats stats;
+  std::vector<TargetRecord> targets;    // what became of each ISE supervoxel (when asked for)
 };
 
 // Throws std::invalid_argument (naming `planner`) when the request has no map, its self
@@ -30,8 +31,10 @@ struct RoundInputs {
 void check_request(const std::string& planner, const PlanRequest& request, const TeamCapabilities& team);
 
 // Reachable ground, map context and task views of one round. `view_team` decides view
-// requirements and labels (the no-hetero ablation passes the homogeneous team).
-RoundInputs prepare_round(const PlanRequest& request, const TeamCapabilities& view_team, const PlannerOptions& options);
+// requirements and labels (the no-hetero ablation passes the homogeneous team);
+// `record_targets` fills RoundInputs::targets (diagnostics).
+RoundInputs prepare_round(const PlanRequest& request, const TeamCapabilities& view_team, const PlannerOptions& options,
+                          bool record_targets = false);
 
 // Ground vertices each species can drive to from its robots' positions (see RoundInputs).
 std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,

@@ -8,9 +8,21 @@
 
 namespace hexplore::planning {
 
+const char* to_string(TargetOutcome o) {
+  switch (o) {
+    case TargetOutcome::kView: return "has_view";
+    case TargetOutcome::kGivenUp: return "given_up";
+    case TargetOutcome::kNoViewpoint: return "no_viewpoint";
+    case TargetOutcome::kOccluded: return "occluded";
+    case TargetOutcome::kUnreachable: return "unreachable";
+    case TargetOutcome::kUnassignable: return "unassignable";
+  }
+  return "unknown";
+}
+
 bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target,
                       const std::vector<const highlevel::Supervoxel*>& candidates, double range,
-                      const PlannerOptions& o, TaskView& view, int64_t* rays) {
+                      const PlannerOptions& o, TaskView& view, int64_t* rays, bool* sighted) {
   struct Scored {
     double score;
     const highlevel::Supervoxel* ground;
@@ -37,6 +49,7 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
     if (!angles_ok(geo, o)) continue;
     ok.push_back({visibility_score(geo, o), g, geo});
   }
+  if (sighted && !ok.empty()) *sighted = true;
   // Ray casts are the expensive part: try candidates best-first and stop at the first clear one.
   std::sort(ok.begin(), ok.end(), [](const Scored& a, const Scored& b) {
     return a.score != b.score ? a.score > b.score : a.ground->key < b.ground->key;
@@ -60,13 +73,17 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
 }
 
 std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapabilities& team,
-                                          const PlannerOptions& o, ViewGenerationStats* stats) {
+                                          const PlannerOptions& o, ViewGenerationStats* stats,
+                                          std::vector<TargetRecord>* targets) {
   ViewGenerationStats local;
   ViewGenerationStats& st = stats ? *stats : local;
   st = {};
   const double range = team.max_observation_range();
   std::vector<TaskView> views;
   std::unordered_set<uint64_t> covered_ground;
+  auto record = [&](uint64_t key, TargetOutcome outcome) {
+    if (targets) targets->push_back({key, outcome});
+  };
 
   // A target outside the exploration region or given up by the team gets no view (counted).
   auto excluded = [&](uint64_t key, const auto& sv) {
@@ -76,6 +93,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     }
     if (ctx.is_ignored(key)) {
       ++st.ignored;
+      record(key, TargetOutcome::kGivenUp);
       return true;
     }
     return false;
@@ -87,28 +105,33 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     // Growing search radius: Vis <= 1 / (beta_l * distance), so once the best visible view
     // within r scores at least what any view beyond r could, it is the best within range.
     TaskView view;
-    bool found = false;
+    bool found = false, sighted = false;
     for (double r = 4.0;; r = std::min(range, 2.0 * r)) {
       found = best_facade_view(ctx, sv, ctx.ground.within(sv.center, r, /*sorted=*/false), std::min(r, range), o, view,
-                               &st.rays_cast);
+                               &st.rays_cast, &sighted);
       if (r >= range) break;
       const double beyond = r - o.sensor_height_m;
       if (found && beyond > 0 && view.score >= 1.0 / (o.beta_l * beyond)) break;
     }
     if (!found) {
       ++st.unobservable_facades;
+      record(key, sighted ? TargetOutcome::kOccluded : TargetOutcome::kNoViewpoint);
       continue;
     }
     view.observation_requirement = observation_requirement((view.position - sv.center).norm(), team);
     // Composite view: ground-ISE supervoxels next to where the robot stands are seen too.
+    view.label = task_label(view.observation_requirement, view.traversal_requirement, team, o.beta_zeta, o.beta_varsigma);
+    if (view.label == kUnassignable) {
+      record(key, TargetOutcome::kUnassignable);
+      continue;
+    }
     for (const auto* g : ctx.ground.within(view.position, o.ground_cover_radius_m)) {
       if (g->covered || covered_ground.count(g->key) || ctx.is_ignored(g->key) || !o.region.contains(g->center)) continue;
       view.targets.push_back(g->key);
       covered_ground.insert(g->key);
       ++st.composite_ground;
     }
-    view.label = task_label(view.observation_requirement, view.traversal_requirement, team, o.beta_zeta, o.beta_varsigma);
-    if (view.label == kUnassignable) continue;
+    for (uint64_t t : view.targets) record(t, TargetOutcome::kView);
     views.push_back(std::move(view));
     ++st.facade_views;
   }
@@ -116,6 +139,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     if (!sv.traversable() || sv.covered || covered_ground.count(key) || excluded(key, sv)) continue;
     if (!ctx.is_reachable(key)) {
       ++st.unreachable_ground;
+      record(key, TargetOutcome::kUnreachable);
       continue;
     }
     TaskView view;
@@ -127,7 +151,11 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     view.traversal_requirement = sv.traversal_requirement;
     view.observation_requirement = 1;
     view.label = task_label(1, view.traversal_requirement, team, o.beta_zeta, o.beta_varsigma);
-    if (view.label == kUnassignable) continue;
+    if (view.label == kUnassignable) {
+      record(key, TargetOutcome::kUnassignable);
+      continue;
+    }
+    record(key, TargetOutcome::kView);
     views.push_back(std::move(view));
     ++st.ground_views;
   }

@@ -14,6 +14,7 @@
 
 #include "common/highlevel/high_level_map.h"
 #include "common/planning/capabilities.h"
+#include "common/planning/give_up_ledger.h"
 #include "common/planning/ground_index.h"
 #include "common/planning/visibility.h"
 
@@ -32,6 +33,23 @@ struct TaskView {
   int label = -1;              // kPublic, species index, or kUnassignable
 };
 
+// What view generation made of one ISE supervoxel inside the exploration region.
+enum class TargetOutcome : uint8_t {
+  kView = 0,           // it has a task view (its own, or a composite facade view's)
+  kGivenUp = 1,        // the team gave up on it (observed from its views, still incomplete)
+  kNoViewpoint = 2,    // facade: no ground a robot reaches within range at a valid angle
+  kOccluded = 3,       // facade: such ground exists, but every line of sight is blocked
+  kUnreachable = 4,    // ground: no robot can stand on it
+  kUnassignable = 5,   // its view's requirements match no species of the team
+};
+inline constexpr int kTargetOutcomeCount = 6;
+const char* to_string(TargetOutcome o);
+
+struct TargetRecord {
+  uint64_t key = 0;
+  TargetOutcome outcome = TargetOutcome::kView;
+};
+
 struct ViewGenerationStats {
   int facade_targets = 0;
   int facade_views = 0;
@@ -47,36 +65,44 @@ struct ViewGenerationStats {
 // The map-derived context shared by the planning stages of one round. `reachable` (when
 // set) limits view positions to ground some robot of the team can drive to, so no view is
 // made where nobody can stand (roofs, upper floors without stairs, closed-off pockets);
-// `ignored` are ISE supervoxels the team gave up on (observed from their view, still not
+// `given_up` says which ISE supervoxels the team gave up on (observed from their views, still not
 // covered); `region` bounds the coverage targets (TeamConfig::exploration_region).
 struct MapContext {
   const highlevel::HighLevelMap& map;
   std::optional<std::unordered_set<uint64_t>> reachable;
   OcclusionGrid occlusion;
   GroundIndex ground;
-  const std::unordered_set<uint64_t>* ignored = nullptr;
+  const GiveUpLedger* given_up = nullptr;
   MapContext(const highlevel::HighLevelMap& m, const PlannerOptions& o,
              std::optional<std::unordered_set<uint64_t>> reachable_ground = std::nullopt,
-             const std::unordered_set<uint64_t>* ignored_targets = nullptr)
+             const GiveUpLedger* given_up_targets = nullptr)
       : map(m),
         reachable(std::move(reachable_ground)),
         occlusion(m, o.eta_s_m),
         ground(m, std::max(2.0, o.eta_r_m), reachable ? &*reachable : nullptr),
-        ignored(ignored_targets) {}
+        given_up(given_up_targets) {}
   MapContext(const MapContext&) = delete;
   MapContext& operator=(const MapContext&) = delete;
-  bool is_ignored(uint64_t key) const { return ignored && ignored->count(key); }
+  bool is_ignored(uint64_t key) const {
+    if (!given_up) return false;
+    const highlevel::Supervoxel* sv = map.find(key);
+    return given_up->given_up(key, sv ? sv->voxel_count : 0);
+  }
   bool is_reachable(uint64_t ground_key) const { return !reachable || reachable->count(ground_key); }
 };
 
 // Best visible view of one facade target from the given candidates; false when none sees it.
 // `range` limits the view distance (the largest observation range, or one species' range).
+// `sighted` (optional) is set when some candidate passed range and angles (so a false result
+// means every line of sight was blocked).
 bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target,
                       const std::vector<const highlevel::Supervoxel*>& candidates, double range,
-                      const PlannerOptions& o, TaskView& view, int64_t* rays = nullptr);
+                      const PlannerOptions& o, TaskView& view, int64_t* rays = nullptr, bool* sighted = nullptr);
 
 // All task views of the map, in ascending key order; unassignable views are dropped.
+// `targets` (optional) receives what became of every ISE supervoxel inside the region.
 std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapabilities& team,
-                                          const PlannerOptions& o, ViewGenerationStats* stats = nullptr);
+                                          const PlannerOptions& o, ViewGenerationStats* stats = nullptr,
+                                          std::vector<TargetRecord>* targets = nullptr);
 
 }  // namespace hexplore::planning

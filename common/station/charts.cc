@@ -135,6 +135,27 @@ Raster topdown_map(const ExperimentRecord& record, int width, int height) {
     r.text(30, legend_y + 1, robot + " (" + track.species + ")", kBlack);
     legend_y += 16;
   }
+  // Open coverage targets of the first robot that reported (every planner sees the same
+  // fused map), coloured by why they are open.
+  const std::pair<const char*, Rgb> states[] = {{"has_view", {230, 140, 0}},  {"given_up", {150, 0, 150}},
+                                                {"no_viewpoint", {0, 150, 150}}, {"occluded", {0, 90, 200}},
+                                                {"unreachable", {120, 120, 0}}, {"unassignable", {200, 0, 0}}};
+  if (!record.open_targets.empty()) {
+    const std::string& reporter = record.open_targets.front().robot;
+    for (const auto& t : record.open_targets) {
+      if (t.robot != reporter) continue;
+      for (const auto& [name, colour] : states)
+        if (t.state == name) r.fill_rect(px(t.center.x()) - 2, py(t.center.y()) - 2, px(t.center.x()) + 2,
+                                         py(t.center.y()) + 2, colour);
+    }
+    int y = height - 20 - 14 * int(std::size(states));
+    r.text(width - 200, y - 14, "OPEN TARGETS (" + reporter + ")", kBlack);
+    for (const auto& [name, colour] : states) {
+      r.fill_rect(width - 200, y, width - 192, y + 8, colour);
+      r.text(width - 186, y + 1, name, kBlack);
+      y += 14;
+    }
+  }
   r.text(10, height - 20, format("SCALE: %.1f M PER 100 PX", 100.0 / scale), kBlack);
   return r;
 }

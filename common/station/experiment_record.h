@@ -36,6 +36,20 @@ inline const std::vector<std::string>& communication_categories() {
   return kCategories;
 }
 
+// One coverage target (ISE supervoxel) still open at the end, as one robot's planner saw it
+// (planning::OpenTarget, in plain data).
+struct OpenTargetRow {
+  std::string robot;
+  uint64_t key = 0;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  bool facade = false;
+  int voxels = 0;
+  int covered_voxels = 0;
+  std::string gap;    // core::CoverageGap name: no_normal, angle, distance, density
+  std::string state;  // planning::TargetOutcome name: has_view, given_up, no_viewpoint, ...
+  int attempts = 0;
+};
+
 struct ExperimentRecord {
   std::string scene;
   std::string planner;
@@ -51,6 +65,8 @@ struct ExperimentRecord {
   double wall_time_s = 0.0;
   // Top-down picture input: occupied voxel centres of the union map at the end.
   std::vector<Eigen::Vector3f> final_map_points_m;
+  // Why exploration was not finished: each live planner's open targets at the end.
+  std::vector<OpenTargetRow> open_targets;
 
   // Sum over robots of their final completeness (paper: lower = less overlap... at equal team completeness).
   double accumulated_completeness() const;

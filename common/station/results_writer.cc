@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -65,6 +66,27 @@ void write_text(const std::filesystem::path& path, const std::string& text, std:
   written.push_back(path.string());
 }
 
+// Per robot: how many targets were open at the end, by state and by coverage gap.
+std::string open_targets_json(const ExperimentRecord& r) {
+  std::map<std::string, std::map<std::string, int>> by_state, by_gap;
+  std::map<std::string, int> total;
+  for (const auto& t : r.open_targets) {
+    ++total[t.robot];
+    ++by_state[t.robot][t.state];
+    ++by_gap[t.robot][t.gap];
+  }
+  auto object = [](const std::map<std::string, int>& m) {
+    std::string o = "{";
+    for (const auto& [k, v] : m) o += (o.size() > 1 ? ", " : "") + quoted(k) + ": " + std::to_string(v);
+    return o + "}";
+  };
+  std::string j = "{";
+  for (const auto& [robot, n] : total)
+    j += std::string(j.size() > 1 ? ", " : "") + quoted(robot) + ": {\"total\": " + std::to_string(n) +
+         ", \"by_state\": " + object(by_state[robot]) + ", \"by_gap\": " + object(by_gap[robot]) + "}";
+  return j + "}";
+}
+
 }  // namespace
 
 std::string summary_json(const ExperimentRecord& r) {
@@ -87,6 +109,7 @@ std::string summary_json(const ExperimentRecord& r) {
     << number(planning.empty() ? 0.0 : *std::max_element(planning.begin(), planning.end()))
     << ", \"rounds\": " << planning.size() << "},\n";
   j << "  \"team_kb_per_s\": " << number(static_cast<double>(team_bytes_total(r)) / 1024.0 / duration) << ",\n";
+  j << "  \"open_targets\": " << open_targets_json(r) << ",\n";
   j << "  \"robots\": {";
   bool first = true;
   for (const auto& [id, track] : r.robots) {
@@ -157,6 +180,14 @@ std::vector<std::string> write_results(const ExperimentRecord& r, const std::str
   for (const auto& [id, times] : r.planning_times_s)
     for (size_t i = 0; i < times.size(); ++i) p << id << "," << i << "," << number(times[i]) << "\n";
   write_text(root / "planning.csv", p.str(), written);
+
+  std::ostringstream o;
+  o << "robot,key,x_m,y_m,z_m,facade,voxels,covered_voxels,gap,state,attempts\n";
+  for (const auto& t : r.open_targets)
+    o << t.robot << "," << t.key << "," << number(t.center.x()) << "," << number(t.center.y()) << ","
+      << number(t.center.z()) << "," << (t.facade ? 1 : 0) << "," << t.voxels << "," << t.covered_voxels << ","
+      << t.gap << "," << t.state << "," << t.attempts << "\n";
+  write_text(root / "open_targets.csv", o.str(), written);
 
   write_png(completeness_chart(r), (root / "completeness.png").string());
   written.push_back((root / "completeness.png").string());

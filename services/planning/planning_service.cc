@@ -11,7 +11,9 @@
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/executable_path.h"
 #include "common/planning/hexplore_planner.h"
+#include "common/planning/open_targets.h"
 #include "common/planning/plan_proto.h"
+#include "common/planning/round_inputs.h"
 #include "common/transport/topics.h"
 
 namespace hexplore::planning_service {
@@ -66,12 +68,26 @@ void PlanningService::setup(service::ServiceContext& context) {
       throw std::invalid_argument("planning: --wait-for-start expects true or false, got '" + it->second + "'");
   }
   const double cycle_ms = parse_positive(args, "cycle-ms", 200.0);
-  reach_m_ = parse_positive(args, "reach-m", 1.0);
   min_replan_s_ = parse_positive(args, "min-replan-s", 1.0);
   peer_timeout_s_ = parse_positive(args, "peer-timeout-s", 5.0);
-  give_up_visits_ = std::max(1, int(parse_positive(args, "give-up-visits", 1.0)));
-  blocked_s_ = parse_positive(args, "blocked-s", 2.0);
-  stuck_s_ = parse_positive(args, "stuck-s", 8.0);
+  planning::GiveUpRules rules;
+  rules.views = std::max(1, int(parse_positive(args, "give-up-views", rules.views)));
+  rules.attempts = std::max(1, int(parse_positive(args, "give-up-attempts", rules.attempts)));
+  ledger_ = planning::GiveUpLedger(rules);
+  planning::FollowerOptions follow;
+  follow.reach_m = parse_positive(args, "reach-m", follow.reach_m);
+  follow.blocked_s = parse_positive(args, "blocked-s", follow.blocked_s);
+  follow.stuck_s = parse_positive(args, "stuck-s", follow.stuck_s);
+  follow.settle_s = parse_positive(args, "settle-s", follow.settle_s);
+  // The cost model charges 1 / observation speed per facade view; execution spends it.
+  follow.observation_time_s = species->observation_speed_views_per_s > 0 ? 1.0 / species->observation_speed_views_per_s : 0.0;
+  if (auto it = args.find("observe"); it != args.end()) {
+    if (it->second == "false") follow.observation_time_s = 0.0;
+    else if (it->second != "true")
+      throw std::invalid_argument("planning: --observe expects true or false, got '" + it->second + "'");
+  }
+  species_index_ = team.species_index(species->name).value_or(0);
+  follower_ = std::make_unique<planning::RouteFollower>(follow, species_index_);
   peer_stuck_s_ = parse_positive(args, "peer-stuck-s", 30.0);
 
   auto& m = context.metrics();
@@ -144,10 +160,14 @@ void PlanningService::setup(service::ServiceContext& context) {
     // makes robots replan each other in a loop and never finish a route (paper: replan on
     // route time-out or when a robot finishes its route).
     shared_[source] = planning::reference_from_proto(r.message, source);
-    for (uint64_t key : r.message.given_up_supervoxels()) ignored_.insert(key);
+    const auto& keys = r.message.given_up_supervoxels();
+    const auto& counts = r.message.given_up_voxel_counts();
+    for (int i = 0; i < keys.size(); ++i) ledger_.merge(keys[i], i < counts.size() ? int(counts[i]) : 0);
   });
   sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
                              [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
+  context.responder().serve<v1::OpenTargetsRequest, v1::OpenTargetsReport>(
+      [this](const transport::Received<v1::OpenTargetsRequest>&) { return open_targets_report(); });
   request_snapshot();
   context.loop().add_timer(std::chrono::microseconds(int64_t(cycle_ms * 1000)), [this] { cycle(); });
   context.set_state(v1::SERVICE_STATE_RUNNING, "planner " + active_name_);
@@ -177,7 +197,7 @@ bool PlanningService::switch_planner(const std::string& name) {
   if (!previous.empty()) {
     if (switches_) switches_->add({{"robot", robot_id_}, {"planner", name}})->increment();
     core::LogLine(core::LogLevel::kInfo, "planning") << robot_id_ << ": planner switched from " << previous << " to " << name;
-    route_.clear();  // plan again with the new planner at the next cycle
+    follower_->set_route({});  // plan again with the new planner at the next cycle
   }
   return true;
 }
@@ -247,7 +267,7 @@ std::vector<planning::RobotState> PlanningService::team_states(int& self) const 
 }
 
 std::unordered_set<uint64_t> PlanningService::avoided_vertices() const {
-  std::unordered_set<uint64_t> out = avoid_;
+  std::unordered_set<uint64_t> out;
   const auto& team = context_->team();
   const int64_t now = context_->now_ns();
   const auto radii = highlevel::body_radii(team);
@@ -267,123 +287,35 @@ std::unordered_set<uint64_t> PlanningService::avoided_vertices() const {
   return out;
 }
 
-void PlanningService::count_attempt(const planning::TaskView& view) {
-  for (uint64_t t : view.targets)
-    if (++attempts_[t] >= give_up_visits_) ignored_.insert(t);
-}
-
-void PlanningService::advance_route() {
-  if (next_view_ >= route_.size()) return;
-  const Eigen::Vector3d me = positions_.at(robot_id_);
-  bool moved = false;
-  while (next_view_ < route_.size() && (route_[next_view_].position - me).head<2>().norm() <= reach_m_) {
-    count_attempt(route_[next_view_]);
-    ++next_view_;
-    moved = true;
-  }
-  if (moved && next_view_ < route_.size()) publish_path();
-}
-
-bool PlanningService::publish_path() {
-  const auto& team = context_->team();
-  const int species = team.species_index(team.robots[size_t(self_)].species).value_or(0);
-  const size_t first = next_view_;
-  const std::unordered_set<uint64_t> avoid = avoided_vertices();
-  for (; next_view_ < route_.size(); ++next_view_) {
-    planning::ExecutablePlan path =
-        planning::executable_path(map_->graph(), positions_.at(robot_id_), species, route_[next_view_], &avoid);
-    if (path.valid) {
-      path_keys_ = path.keys;
-      path_points_ = path.waypoints;
-      if (backoff_) {
-        path.waypoints.insert(path.waypoints.begin(), *backoff_);
-        backoff_.reset();
-      }
-      context_->publisher().publish(topics::path(robot_id_), planning::path_to_proto(round_, path, speed_mps_));
-      return true;
-    }
-    // No way there from here for us (maybe only around a spot we were blocked at): skip it
-    // without giving up on it for the team.
-  }
-  if (!avoid_.empty()) {
-    // The spots we avoid cut us off from every view: forget them and try the route again.
-    core::LogLine(core::LogLevel::kInfo, "planning")
-        << robot_id_ << ": no path avoids the " << avoid_.size() << " blocked spot(s); forgetting them";
-    avoid_.clear();
-    next_view_ = first;
-    return publish_path();
-  }
-  if (backoff_) {
-    // Nowhere to go from here on the graph: at least leave the spot we are stuck at.
-    planning::ExecutablePlan out;
-    out.valid = true;
-    out.waypoints = {*backoff_};
-    backoff_.reset();
-    context_->publisher().publish(topics::path(robot_id_), planning::path_to_proto(round_, out, speed_mps_));
-  }
-  return false;
-}
-
 int64_t PlanningService::now_ns() const { return sim_time_ns_ > 0 ? sim_time_ns_ : context_->now_ns(); }
 
-void PlanningService::check_progress() {
-  const int64_t now = now_ns();
-  const Eigen::Vector3d me = positions_.at(robot_id_);
-  if (trail_.empty() || (trail_.back() - me).head<2>().norm() >= 0.5) {
-    trail_.push_back(me);
-    if (trail_.size() > 12) trail_.erase(trail_.begin());
+planning::DriveState PlanningService::drive_state() const {
+  switch (own_motion_) {
+    case v1::MOTION_STATE_MOVING: return planning::DriveState::kMoving;
+    case v1::MOTION_STATE_BLOCKED: return planning::DriveState::kBlocked;
+    case v1::MOTION_STATE_STOPPED:
+    case v1::MOTION_STATE_EMERGENCY_STOP: return planning::DriveState::kStopped;
+    default: return planning::DriveState::kIdle;
   }
-  if (next_view_ >= route_.size() || progress_ns_ < 0 || (me - progress_pos_).head<2>().norm() > 0.5) {
-    progress_pos_ = me;
-    progress_ns_ = now;
-    blocked_seen_ = false;
-  }
-  if (own_motion_ != v1::MOTION_STATE_BLOCKED) blocked_since_ns_ = -1;
-  else if (blocked_since_ns_ < 0) blocked_since_ns_ = now;
-  blocked_seen_ = blocked_seen_ || own_motion_ == v1::MOTION_STATE_BLOCKED;
-  if (next_view_ >= route_.size()) return;
-  const bool blocked = blocked_since_ns_ >= 0 && core::ns_to_s(now - blocked_since_ns_) >= blocked_s_;
-  const bool stuck = core::ns_to_s(now - progress_ns_) >= stuck_s_;
-  if (!blocked && !stuck) return;
-  const Eigen::Vector3d& goal = route_[next_view_].position;
-  core::LogLine(core::LogLevel::kInfo, "planning")
-      << robot_id_ << ": " << (blocked ? "blocked" : "no progress") << " at (" << me.x() << ", " << me.y()
-      << "), skipping the view at (" << goal.x() << ", " << goal.y() << ")";
-  if (blocked || blocked_seen_) {
-    // The vertex we were driving to when blocked: the path point after the one nearest to us.
-    size_t near = 0;
-    for (size_t i = 1; i < path_points_.size(); ++i)
-      if ((path_points_[i] - me).head<2>().norm() < (path_points_[near] - me).head<2>().norm()) near = i;
-    for (size_t i = near; i < path_keys_.size(); ++i)
-      if ((path_points_[i] - me).head<2>().norm() > 0.4) {
-        avoid_.insert(path_keys_[i]);
-        break;
-      }
-  }
-  // Whatever holds us here, leave the way we came before heading for the next view.
-  for (auto it = trail_.rbegin(); it != trail_.rend(); ++it)
-    if ((*it - me).head<2>().norm() >= 1.0) {
-      backoff_ = *it;
-      break;
-    }
-  count_attempt(route_[next_view_]);
-  ++next_view_;
-  blocked_since_ns_ = -1;
-  progress_pos_ = me;
-  progress_ns_ = now;
-  if (next_view_ < route_.size()) publish_path();
+}
+
+void PlanningService::follow_route() {
+  const auto order = follower_->step(core::ns_to_s(now_ns()), positions_.at(robot_id_), drive_state(), *map_,
+                                     avoided_vertices(), ledger_);
+  if (!order) return;
+  v1::ExecutablePath path = planning::path_to_proto(round_, order->path, speed_mps_);
+  path.set_observing(order->observing);
+  context_->publisher().publish(topics::path(robot_id_), path);
 }
 
 void PlanningService::cycle() {
   if (!have_map_) request_snapshot();  // hlmap may have started after us, or a reply was lost
   if (!mission_active_ || !have_map_ || !active_) return;
-  advance_route();
-  check_progress();
+  follow_route();
   const double age_s = since_last_plan_s();
   std::string reason;
-  if (route_.empty() && last_plan_ns_ == 0) reason = "first round";
-  else if (route_.empty() && age_s >= min_replan_s_) reason = "no route";
-  else if (next_view_ >= route_.size() && age_s >= min_replan_s_) reason = "route finished";
+  if (last_plan_ns_ == 0) reason = "first round";
+  else if (follower_->finished() && age_s >= min_replan_s_) reason = "route finished";
   else if (age_s >= eta_t_s_) reason = "route timed out";
   else if (peer_finished_ && age_s >= min_replan_s_) reason = "teammate finished its route";
   if (!reason.empty()) replan(reason);
@@ -399,7 +331,7 @@ void PlanningService::replan(const std::string& reason) {
   req.map = map_.get();
   req.robots = team_states(req.self);
   req.round = ++round_;
-  req.ignored = ignored_;
+  req.given_up = &ledger_;
   for (const auto& [source, s] : shared_) req.shared.push_back(s);
   peer_finished_ = false;
   last_plan_ns_ = context_->now_ns();
@@ -413,9 +345,7 @@ void PlanningService::replan(const std::string& reason) {
   }
   // Our own solution is a reference candidate next round, like the teammates'.
   shared_[robot_id_] = res.as_reference(robot_id_);
-  route_ = res.robots[size_t(req.self)].route;
-  next_view_ = 0;
-  progress_ns_ = -1;  // a new route: progress is measured from here
+  const std::vector<planning::TaskView>& route = res.robots[size_t(req.self)].route;
 
   stage_views_->observe(res.times.views_s);
   stage_clustering_->observe(res.times.clustering_s);
@@ -433,12 +363,13 @@ void PlanningService::replan(const std::string& reason) {
   core::LogLine(core::LogLevel::kDebug, "planning")
       << robot_id_ << ": round " << round_ << " (" << reason << ", " << active_name_ << "): " << res.views << " views, "
       << res.clusters << " clusters (" << res.dropped_clusters << " dropped), " << res.open_views << " open, "
-      << route_.size() << " route views, " << req.robots.size() << " live, " << ignored_.size() << " given up, "
+      << route.size() << " route views, " << req.robots.size() << " live, " << ledger_.given_up_targets().size()
+      << " given up, "
       << res.view_stats.outside_region << " outside, " << res.view_stats.unreachable_ground << " unreachable ground, "
       << res.times.total_s * 1e3 << " ms";
-  if (!route_.empty()) {
+  if (!route.empty()) {
     const Eigen::Vector3d& me = positions_.at(robot_id_);
-    const Eigen::Vector3d& first = route_.front().position;
+    const Eigen::Vector3d& first = route.front().position;
     core::LogLine(core::LogLevel::kDebug, "planning")
         << robot_id_ << ": at (" << me.x() << ", " << me.y() << ", " << me.z() << "), first view (" << first.x()
         << ", " << first.y() << ", " << first.z() << ")";
@@ -446,12 +377,30 @@ void PlanningService::replan(const std::string& reason) {
 
   auto& pub = context_->publisher();
   v1::TeamSolution solution = planning::to_proto(res);
-  std::vector<uint64_t> given_up(ignored_.begin(), ignored_.end());
+  std::vector<std::pair<uint64_t, int>> given_up(ledger_.given_up_targets().begin(), ledger_.given_up_targets().end());
   std::sort(given_up.begin(), given_up.end());
-  for (uint64_t key : given_up) solution.add_given_up_supervoxels(key);
+  for (const auto& [key, voxels] : given_up) {
+    solution.add_given_up_supervoxels(key);
+    solution.add_given_up_voxel_counts(uint32_t(std::max(0, voxels)));
+  }
   pub.publish(std::string(topics::kTeamPlan), solution);
-  pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route_));
-  if (!route_.empty()) publish_path();  // the first route view with a path (res.path when valid)
+  pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route));
+  follower_->set_route(route);
+  follow_route();  // the path to the first view at once
+}
+
+v1::OpenTargetsReport PlanningService::open_targets_report() const {
+  std::vector<planning::OpenTarget> targets;
+  if (have_map_) {
+    planning::PlanRequest req;
+    req.map = map_.get();
+    req.robots = team_states(req.self);
+    req.given_up = &ledger_;
+    const planning::RoundInputs in = planning::prepare_round(req, capabilities_, options_, /*record_targets=*/true);
+    const auto attempts = ledger_.attempt_counts();
+    targets = planning::open_targets(*map_, in.targets, &attempts);
+  }
+  return planning::to_proto(robot_id_, core::ns_to_s(now_ns()), round_, targets);
 }
 
 void PlanningService::fill_status(v1::ServiceStatus& status) {
@@ -467,7 +416,7 @@ void PlanningService::fill_status(v1::ServiceStatus& status) {
     add("views_remaining", double(last_views_));
     add("planning_time_s", last_planning_time_s_);
   }
-  add("route_views_left", double(route_.size() - std::min(route_.size(), next_view_)));
+  add("route_views_left", double(follower_ ? follower_->views_left() : 0));
   add("map_version", double(map_version_));
 }
 

@@ -2,23 +2,19 @@
 // The planning process of one robot: keeps the fused high-level map from its hlmap, its own
 // and its teammates' poses, and the teammates' previous solutions; plans a round with the
 // active planner when the route times out (eta_t), when its robot finished the route, or when
-// a teammate shared a new solution; publishes the team solution (team/plan), its exploration
-// route and the executable path to the next view (to its safety); a teammate going idle also
-// triggers a round (it finished its route). The active planner comes
-// from the config and can be switched at run time by a MissionCommand.
+// a teammate finished its route (went idle); publishes the team solution (team/plan) and its
+// exploration route, and hands the route to its RouteFollower (common/planning), whose
+// paths and sensor aims go to its safety. The active planner comes from the config and can
+// be switched at run time by a MissionCommand. It answers OpenTargetsRequest with why the
+// remaining coverage targets are still open (common/planning/open_targets.h).
 // Robustness: teammates not heard from for --peer-timeout-s, or trying to move without moving
-// for --peer-stuck-s, leave the team of the next round (their clusters go to the others); the ISE supervoxels of a view this robot reached
-// --give-up-visits times (or could not find a path to) and that are still uncovered are given
-// up on (no view for them any more), so views that can never be satisfied do not stay forever;
-// the given-up set travels with the team solution, so every planner agrees on what is left.
-// A robot blocked by terrain (--blocked-s of sim time) or making no progress (--stuck-s) skips
-// its current view, which counts as an attempt too; the vertex it could not drive to is
-// avoided by its later paths, and its next path first backs off along its recent trail.
+// for --peer-stuck-s, leave the team of the next round (their clusters go to the others).
+// Targets that stay incomplete after being observed are given up (GiveUpLedger), and the
+// given-up set travels with the team solution, so every planner agrees on what is left.
 
 #include <cstdint>
 #include <map>
 #include <memory>
-#include <optional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,7 +24,9 @@
 #include <Eigen/Core>
 
 #include "common/highlevel/high_level_map.h"
+#include "common/planning/give_up_ledger.h"
 #include "common/planning/planner_registry.h"
+#include "common/planning/route_follower.h"
 #include "common/service/service.h"
 #include "hexplore/v1/hlmap.pb.h"
 #include "hexplore/v1/mission.pb.h"
@@ -41,10 +39,11 @@ class PlanningService : public service::Service {
  public:
   core::ServiceKind kind() const override { return core::ServiceKind::kPlanning; }
   // Options (after --config/--robot): --wait-for-start true|false (default false),
-  // --cycle-ms N (trigger check period, default 200), --reach-m X (a view counts as reached
-  // within this distance, default 1.0), --min-replan-s X (default 1.0), --peer-timeout-s X
-  // (default 5.0, wall time), --give-up-visits N (default 1), --blocked-s X (default 2.0),
-  // --stuck-s X (default 8.0), --peer-stuck-s X (default 30.0).
+  // --cycle-ms N (trigger check period, default 200), --min-replan-s X (default 1.0),
+  // --peer-timeout-s X (default 5.0, wall time), --peer-stuck-s X (default 30.0); the
+  // follower's --reach-m X (1.0), --blocked-s X (2.0), --stuck-s X (8.0), --settle-s X (2.0),
+  // --observe true|false (dwell at facade views, default true); the ledger's
+  // --give-up-views N (2) and --give-up-attempts N (3).
   void setup(service::ServiceContext& context) override;
   void fill_status(v1::ServiceStatus& status) override;
 
@@ -60,17 +59,14 @@ class PlanningService : public service::Service {
   // Seconds since the last round: sim time when the driver stamps it, else wall time.
   double since_last_plan_s() const;
   void replan(const std::string& reason);
-  void advance_route();
-  // Skips the current view when the robot is blocked or makes no progress towards it.
-  void check_progress();
+  // One step of the route follower; publishes the path (or the aim) it asks for.
+  void follow_route();
+  planning::DriveState drive_state() const;
   int64_t now_ns() const;  // sim time when the driver stamps it, else the loop's clock
-  // Publishes the path to the next reachable route view; skips (and counts an attempt for)
-  // views without a path. False when no view of the route is left.
-  bool publish_path();
-  void count_attempt(const planning::TaskView& view);
-  // The vertices our paths keep off: those we were blocked at, and those within reach of the
-  // body of a teammate gone silent (its services died; the robot still stands where it was
-  // last heard, and no safety layer reports it any more).
+  v1::OpenTargetsReport open_targets_report() const;
+  // The vertices our paths keep off besides those the follower was blocked at: those within
+  // reach of the body of a teammate gone silent (its services died; the robot still stands
+  // where it was last heard, and no safety layer reports it any more).
   std::unordered_set<uint64_t> avoided_vertices() const;
   // The live team (self, and teammates heard from recently); sets `self` to our index in it.
   std::vector<planning::RobotState> team_states(int& self) const;
@@ -96,17 +92,10 @@ class PlanningService : public service::Service {
   std::map<std::string, int64_t> heard_ns_;           // robot id -> loop-clock time of its last pose
   std::map<std::string, Eigen::Vector3d> peer_anchor_;  // robot id -> where it last moved 0.5 m from
   std::map<std::string, int64_t> peer_moved_ns_;      // robot id -> now_ns() when it got there
-  std::unordered_map<uint64_t, int> attempts_;        // ISE supervoxel -> visits of a view for it
-  std::unordered_set<uint64_t> ignored_;              // given up on (see the class comment)
+  planning::GiveUpLedger ledger_;                     // targets given up by us and the team
+  std::unique_ptr<planning::RouteFollower> follower_;  // executes our route
+  int species_index_ = 0;
   int own_motion_ = 0;                                // our last v1::MotionState
-  int64_t blocked_since_ns_ = -1;                     // now_ns() when we became blocked, -1 if not
-  Eigen::Vector3d progress_pos_ = Eigen::Vector3d::Zero();  // where we last made progress
-  int64_t progress_ns_ = -1;                          // now_ns() of that progress
-  std::unordered_set<uint64_t> avoid_;                // graph vertices we were blocked driving to
-  std::vector<uint64_t> path_keys_;                   // the last published path's vertices
-  std::vector<Eigen::Vector3d> path_points_;          // and their positions
-  std::vector<Eigen::Vector3d> trail_;                // our recent positions, >= 0.5 m apart
-  std::optional<Eigen::Vector3d> backoff_;            // first waypoint of the next path
   int64_t sim_time_ns_ = 0;                           // latest sim time from our pose
   int64_t last_plan_sim_ns_ = 0;
 
@@ -115,18 +104,11 @@ class PlanningService : public service::Service {
   size_t last_views_ = 0;             // task views of the latest round (0 = exploration done)
   double last_planning_time_s_ = 0.0;
   int64_t last_plan_ns_ = 0;
-  std::vector<planning::TaskView> route_;
-  size_t next_view_ = 0;
   double eta_t_s_ = 10.0;
-  double reach_m_ = 1.0;
   double min_replan_s_ = 1.0;
   double speed_mps_ = 0.5;
   double peer_timeout_s_ = 5.0;
-  int give_up_visits_ = 1;
-  double blocked_s_ = 2.0;
-  double stuck_s_ = 8.0;
   double peer_stuck_s_ = 30.0;
-  bool blocked_seen_ = false;  // blocked at least once since our last progress
 
   metrics::Histogram* stage_views_ = nullptr;
   metrics::Histogram* stage_clustering_ = nullptr;

@@ -1,9 +1,11 @@
 #include "services/station/station_service.h"
 
+#include <cctype>
 #include <cstdio>
 #include <utility>
 
 #include "common/core/clock.h"
+#include "common/core/coverage_gap.h"
 #include "common/core/config_error.h"
 #include "common/core/endpoints.h"
 #include "common/core/log.h"
@@ -42,6 +44,13 @@ bool parse_bool(const std::map<std::string, std::string>& args, const std::strin
   if (it->second == "true" || it->second == "1" || it->second == "yes") return true;
   if (it->second == "false" || it->second == "0" || it->second == "no") return false;
   throw core::ConfigError("<command line>", "--" + name, "expected true or false, got '" + it->second + "'");
+}
+
+// "OPEN_TARGET_HAS_VIEW" -> "has_view".
+std::string lowercase_after_prefix(const std::string& name, const std::string& prefix) {
+  std::string out = name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name;
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
 }
 
 template <typename M>
@@ -219,6 +228,37 @@ void StationService::request_snapshots() {
   }
 }
 
+void StationService::request_open_targets() {
+  for (const auto& robot : context_->team().robots) {
+    v1::OpenTargetsRequest request;
+    request.set_requester("station");
+    ++reports_pending_;
+    context_->requester(robot.id, core::ServiceKind::kPlanning)
+        .request<v1::OpenTargetsRequest, v1::OpenTargetsReport>(
+            request,
+            [this, id = robot.id](const transport::Received<v1::OpenTargetsReport>* reply) {
+              --reports_pending_;
+              if (reply == nullptr) return;  // a robot that is gone has no report
+              for (const v1::OpenTarget& t : reply->message.targets()) {
+                OpenTargetRow row;
+                row.robot = id;
+                row.key = t.key();
+                row.center = {t.center_m().x(), t.center_m().y(), t.center_m().z()};
+                row.facade = t.facade();
+                row.voxels = int(t.voxel_count());
+                row.covered_voxels = int(t.covered_voxels());
+                row.gap = std::string(core::to_string(core::coverage_gap_from_wire(uint32_t(t.coverage_gap()))));
+                row.state = v1::OpenTargetState_Name(t.state());
+                if (row.state.empty()) row.state = "unknown";
+                else row.state = lowercase_after_prefix(row.state, "OPEN_TARGET_");
+                row.attempts = int(t.attempts());
+                recorder_->record().open_targets.push_back(std::move(row));
+              }
+            },
+            kSnapshotTimeout);
+  }
+}
+
 void StationService::print_progress() {
   const auto& samples = recorder_->record().completeness;
   const double completeness = samples.empty() ? 0.0 : samples.back().team;
@@ -237,11 +277,13 @@ void StationService::finish(const std::string& reason) {
   stop.mutable_stop();
   publish_mission(stop);
   core::LogLine(core::LogLevel::kInfo, "station") << "mission over: " << reason << "; fetching final maps";
-  // One last snapshot round, then write and stop; waits at most kFinalSnapshotWaitS.
+  // One last snapshot round and each planner's open targets, then write and stop; waits at
+  // most kFinalSnapshotWaitS.
   const double deadline = loop_s() + kFinalSnapshotWaitS;
   if (snapshots_pending_ == 0) request_snapshots();
+  request_open_targets();
   context_->loop().add_timer(kTick, [this, deadline] {
-    if (snapshots_pending_ > 0 && loop_s() < deadline) return;
+    if ((snapshots_pending_ > 0 || reports_pending_ > 0) && loop_s() < deadline) return;
     auto& record = recorder_->record();
     record.end_reason = end_reason_;
     record.exploration_time_s = recorder_->mission_time_s();

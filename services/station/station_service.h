@@ -65,6 +65,8 @@ class StationService : public service::Service {
   void subscribe_team(service::ServiceContext& context);
   void tick();
   void request_snapshots();
+  // Asks every robot's planning why its coverage targets are still open (end of mission).
+  void request_open_targets();
   void publish_mission(const v1::MissionCommand& command);
   void print_progress();
   void finish(const std::string& reason);
@@ -81,6 +83,7 @@ class StationService : public service::Service {
   double last_snapshot_s_ = -1e9;
   double last_progress_s_ = -1e9;
   int snapshots_pending_ = 0;
+  int reports_pending_ = 0;
   bool finished_ = false;
   bool record_complete_ = false;  // the record is complete
   std::string end_reason_;

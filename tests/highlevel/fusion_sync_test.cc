@@ -61,6 +61,47 @@ TEST(MapFusion, FusesByMaxOrAndAverage) {
   EXPECT_TRUE(m.edges().empty());
 }
 
+TEST(MapFusion, AnIncompleteSupervoxelTakesTheFurthestSourcesGap) {
+  MapFusion fusion(kLevels);
+  Supervoxel a = sv(1, 0.0, 1, false, {0, 0, 1});
+  a.covered_voxels = 3;
+  a.gap = core::CoverageGap::kAngle;
+  Supervoxel b = a;
+  b.covered_voxels = 8;
+  b.gap = core::CoverageGap::kDensity;
+  fusion.apply("a", MapUpdate{.upserts = {a}});
+  fusion.apply("b", MapUpdate{.upserts = {b}});
+  EXPECT_EQ(fusion.map().find(1)->gap, core::CoverageGap::kDensity);
+  EXPECT_EQ(fusion.map().find(1)->covered_voxels, 8);
+  Supervoxel c = a;
+  c.covered = true;
+  c.covered_voxels = c.voxel_count;
+  c.gap = core::CoverageGap::kNone;
+  fusion.apply("c", MapUpdate{.upserts = {c}});
+  EXPECT_TRUE(fusion.map().find(1)->covered);
+  EXPECT_EQ(fusion.map().find(1)->gap, core::CoverageGap::kNone);
+}
+
+TEST(ProtoConvert, CoverageGapTravelsWithIncompleteSupervoxelsOnly) {
+  Supervoxel s = sv(5, 1.0, 1, false, {0, 0, 1});
+  s.covered_voxels = 7;
+  s.gap = core::CoverageGap::kDistance;
+  v1::Supervoxel m;
+  to_proto(s, &m);
+  const Supervoxel back = from_proto(m);
+  EXPECT_EQ(back.gap, core::CoverageGap::kDistance);
+  EXPECT_EQ(back.covered_voxels, 7);
+  s.covered = true;
+  v1::Supervoxel covered;
+  to_proto(s, &covered);
+  EXPECT_EQ(covered.covered_voxels(), 0u);  // not sent: covered says it all
+  EXPECT_EQ(covered.coverage_gap(), v1::COVERAGE_GAP_NONE);
+  EXPECT_EQ(from_proto(covered).covered_voxels, s.voxel_count);
+  // A gap this build does not know (a newer peer) reads as "no reason given".
+  m.set_coverage_gap(static_cast<v1::CoverageGap>(42));
+  EXPECT_EQ(from_proto(m).gap, core::CoverageGap::kNone);
+}
+
 TEST(MapFusion, ResultDoesNotDependOnArrivalOrder) {
   // Three sources' increments, delivered in different interleavings.
   std::vector<SourcedUpdate> increments;

@@ -37,6 +37,29 @@ void expect_same(const SupervoxelSegmenter& a, const SupervoxelSegmenter& b) {
   EXPECT_EQ(a.edges(), b.edges());
 }
 
+TEST(Segmenter, SupervoxelCarriesCoveredCountAndTheCommonestGap) {
+  testing::Voxelizer vox(0.15);
+  for (double x = 0.05; x < 0.9; x += 0.15)
+    for (double y = 0.05; y < 0.9; y += 0.15) vox.add({x, y, 0.0}, kGroundFlags, 0b1, Eigen::Vector3f::UnitZ());
+  auto voxels = vox.samples();
+  ASSERT_GE(voxels.size(), 30u);
+  for (size_t i = 0; i < voxels.size(); ++i) {
+    if (i < 10) {
+      voxels[i].flags |= kVoxelCovered;
+    } else {
+      voxels[i].flags &= ~uint32_t(kVoxelCovered);
+      voxels[i].gap = i < 14 ? core::CoverageGap::kAngle : core::CoverageGap::kDensity;
+    }
+  }
+  SupervoxelSegmenter seg(SegmenterParams{}, {1});
+  seg.update(voxels);
+  ASSERT_EQ(seg.supervoxels().size(), 1u);
+  const Supervoxel& s = seg.supervoxels().begin()->second;
+  EXPECT_FALSE(s.covered);
+  EXPECT_EQ(s.covered_voxels, 10);
+  EXPECT_EQ(s.gap, core::CoverageGap::kDensity);
+}
+
 TEST(Segmenter, NoisyThickSlabIsOneLayer) {
   // +/-5 cm of noise on a 5 cm grid: a slab two to three voxels thick that straddles the
   // z = 0 seed boundary, so seeds exist in two vertically adjacent cells of every column.

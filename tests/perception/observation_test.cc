@@ -1,5 +1,7 @@
 // Observation metrics and coverage Q(v) (eq. 2): ISE until a close, frontal, dense observation.
 
+#include <map>
+
 #include <gtest/gtest.h>
 
 #include "tests/perception/synthetic_scene.h"
@@ -118,6 +120,53 @@ TEST(Observation, GroundNearTheSensorIsCoveredAtGrazingAnglesFarGroundIsNot) {
   }
   EXPECT_GT(near_checked, 50);
   EXPECT_GT(far_checked, 50);
+}
+
+// The coverage gap names the first unmet term of Q(v), so a user can tell "look from
+// elsewhere" (angle, distance) from "look longer" (density).
+TEST(Observation, CoverageGapNamesTheUnmetTerm) {
+  auto interior_gaps = [](const PerceptionMap& map) {
+    std::map<core::CoverageGap, int> n;
+    for (const VoxelView& v : map.voxels())
+      if (interior(v)) ++n[v.coverage_gap];
+    return n;
+  };
+  const std::vector<float> dense = wall(0.01);
+  {  // grazing only: angle
+    PerceptionMap map(two_species_params());
+    map.integrate(scan_of(dense, {-6, 1, 1}), {});
+    const auto n = interior_gaps(map);
+    EXPECT_GT(n.count(core::CoverageGap::kAngle) ? n.at(core::CoverageGap::kAngle) : 0, 100);
+    EXPECT_EQ(n.count(core::CoverageGap::kNone), 0u);
+  }
+  {  // frontal but beyond SLUGCAT's 10 m: distance
+    PerceptionMap map(two_species_params());
+    map.integrate(scan_of(dense, {1.5, 15, 1}), {});
+    const auto n = interior_gaps(map);
+    EXPECT_GT(n.count(core::CoverageGap::kDistance) ? n.at(core::CoverageGap::kDistance) : 0, 100);
+    EXPECT_EQ(n.count(core::CoverageGap::kNone), 0u);
+  }
+  {  // frontal, close, sparse: density; then dense: complete, and the gap is gone
+    PerceptionMap map(two_species_params());
+    map.integrate(scan_of(wall(0.05), {1.5, 3, 1}), {});
+    auto n = interior_gaps(map);
+    EXPECT_GT(n.count(core::CoverageGap::kDensity) ? n.at(core::CoverageGap::kDensity) : 0, 100);
+    map.integrate(scan_of(dense, {1.5, 3, 1}), {});
+    n = interior_gaps(map);
+    EXPECT_GT(n.count(core::CoverageGap::kNone) ? n.at(core::CoverageGap::kNone) : 0, 100);
+    EXPECT_EQ(n.count(core::CoverageGap::kDensity), 0u);
+  }
+}
+
+TEST(Observation, AGapChangeIsPublished) {
+  PerceptionMap map(two_species_params());
+  map.integrate(scan_of(wall(0.01), {-6, 1, 1}), {});  // grazing: angle
+  map.take_changes();
+  map.integrate(scan_of(wall(0.05), {1.5, 3, 1}), {});  // frontal, sparse: density (still ISE)
+  int density = 0;
+  for (const VoxelView& v : map.take_changes())
+    if (interior(v) && v.coverage_gap == core::CoverageGap::kDensity) ++density;
+  EXPECT_GT(density, 100);
 }
 
 }  // namespace

@@ -34,13 +34,13 @@ struct Team {
     t.robots = {{"slug1", "SLUGCAT", {1.5, 1.5, 0}, 0}, {"mr1", "MR1000", {20.5, 1.5, 0}, 0}};
     return t;
   }
-  PlanResult plan(const PlannerOptions& o, std::unordered_set<uint64_t> ignored = {}) const {
+  PlanResult plan(const PlannerOptions& o, const GiveUpLedger* given_up = nullptr) const {
     auto p = PlannerRegistry::builtin().create("hexplore");
     p->configure({caps, o});
     PlanRequest r;
     r.map = &map;
     for (const auto& rc : team.robots) r.robots.push_back({rc.id, *team.species_index(rc.species), rc.start_position_m});
-    r.ignored = std::move(ignored);
+    r.given_up = given_up;
     return p->plan(r);
   }
 };
@@ -68,10 +68,12 @@ TEST(TeamRun, GivenUpTargetsGetNoView) {
   const Team t;
   const PlanResult first = t.plan(t.options);
   std::unordered_set<uint64_t> ignored;
+  GiveUpLedger ledger;
   for (const auto& r : first.robots)
     for (const auto& v : r.route) ignored.insert(v.targets.begin(), v.targets.end());
   ASSERT_FALSE(ignored.empty());
-  const PlanResult again = t.plan(t.options, ignored);
+  for (uint64_t k : ignored) ledger.merge(k, t.map.find(k) ? t.map.find(k)->voxel_count : 0);
+  const PlanResult again = t.plan(t.options, &ledger);
   EXPECT_LT(again.views, first.views);
   EXPECT_GT(again.view_stats.ignored, 0);
   for (const auto& r : again.robots)

@@ -39,6 +39,9 @@ ExperimentRecord sample_record(uint64_t seed, double time_s, double final_comple
   r.team_bytes["a"]["incremental_map"] = 10240;
   r.planning_times_s["a"] = {0.05, 0.07};
   r.final_map_points_m = {{0, 0, 0}, {5, 5, 3}, {9, 1, 1}};
+  r.open_targets = {{"a", 7, {1, 2, 3}, true, 40, 30, "density", "has_view", 1},
+                    {"a", 9, {2, 2, 0}, false, 20, 5, "angle", "given_up", 2},
+                    {"b", 7, {1, 2, 3}, true, 40, 30, "density", "has_view", 0}};
   return r;
 }
 
@@ -53,12 +56,18 @@ TEST(ResultsWriter, WritesEveryFile) {
   const auto dir = std::filesystem::temp_directory_path() / "hexplore_results_test";
   std::filesystem::remove_all(dir);
   const auto files = write_results(sample_record(1, 100.0, 0.8), dir.string());
-  EXPECT_EQ(files.size(), 7u);
+  EXPECT_EQ(files.size(), 8u);
   for (const auto& f : files) EXPECT_GT(std::filesystem::file_size(f), 20u) << f;
   const auto summary = slurp(dir / "summary.json");
   EXPECT_NE(summary.find("\"final_completeness\": 0.8"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"accumulated_completeness\": 0.96"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"end_reason\": \"no task views remain\""), std::string::npos);
+  EXPECT_NE(summary.find("\"a\": {\"total\": 2, \"by_state\": {\"given_up\": 1, \"has_view\": 1}, "
+                         "\"by_gap\": {\"angle\": 1, \"density\": 1}}"),
+            std::string::npos)
+      << summary;
+  const auto open = slurp(dir / "open_targets.csv");
+  EXPECT_NE(open.find("a,9,2,2,0,0,20,5,angle,given_up,2"), std::string::npos) << open;
   const auto comm = slurp(dir / "communication.csv");
   EXPECT_NE(comm.find("a,incremental_map,10,0.1"), std::string::npos) << comm;
   const auto completeness = slurp(dir / "completeness.csv");

@@ -1,0 +1,53 @@
+#include "common/planning/give_up_ledger.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hexplore::planning {
+
+bool GiveUpLedger::observed(uint64_t key, const Eigen::Vector3d& spot, int voxels) {
+  Record& r = records_[key];
+  ++r.attempts;
+  const double d2 = rules_.distinct_m * rules_.distinct_m;
+  if (std::none_of(r.spots.begin(), r.spots.end(), [&](const Eigen::Vector3d& s) { return (s - spot).squaredNorm() < d2; }))
+    r.spots.push_back(spot);
+  return decide(key, r, voxels);
+}
+
+bool GiveUpLedger::failed(uint64_t key, int voxels) {
+  Record& r = records_[key];
+  ++r.attempts;
+  return decide(key, r, voxels);
+}
+
+bool GiveUpLedger::decide(uint64_t key, const Record& r, int voxels) {
+  if (int(r.spots.size()) < rules_.views && r.attempts < rules_.attempts) return false;
+  if (given_up(key, voxels)) return false;  // already
+  given_up_[key] = voxels;
+  records_.erase(key);  // if it comes back, it gets a fresh set of tries
+  return true;
+}
+
+void GiveUpLedger::merge(uint64_t key, int voxels) {
+  auto [it, fresh] = given_up_.emplace(key, voxels);
+  if (!fresh) it->second = std::max(it->second, voxels);
+}
+
+bool GiveUpLedger::given_up(uint64_t key, int current_voxels) const {
+  const auto it = given_up_.find(key);
+  if (it == given_up_.end()) return false;
+  return current_voxels <= std::ceil(rules_.regrowth_ratio * std::max(1, it->second));
+}
+
+int GiveUpLedger::attempts(uint64_t key) const {
+  const auto it = records_.find(key);
+  return it == records_.end() ? 0 : it->second.attempts;
+}
+
+std::unordered_map<uint64_t, int> GiveUpLedger::attempt_counts() const {
+  std::unordered_map<uint64_t, int> out;
+  for (const auto& [key, r] : records_) out[key] = r.attempts;
+  return out;
+}
+
+}  // namespace hexplore::planning

@@ -1,0 +1,60 @@
+#pragma once
+// Which coverage targets the team has stopped making views for, and why. A target (ISE
+// supervoxel) is given up only after it stayed incomplete although a robot observed it from
+// `views` distinct spots, or after `attempts` tries of any kind (observed, or skipped because
+// the robot was blocked on the way): one look can fail for reasons a second spot fixes (an
+// occluding teammate, a grazing angle), but a surface that stays incomplete from two spots
+// rarely completes from a third, and a robot that keeps coming back to it finishes nothing.
+// A given-up target comes back when its supervoxel has grown markedly since (new voxels: the
+// neighbourhood changed, e.g. a door opened onto it), so giving up is never final.
+// Given-up targets travel with the team solution, so every planner agrees on what is left.
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace hexplore::planning {
+
+struct GiveUpRules {
+  int views = 2;               // distinct observation spots
+  int attempts = 3;            // tries of any kind
+  double distinct_m = 1.5;     // observation spots closer than this are one spot
+  double regrowth_ratio = 1.25;  // a given-up target whose voxel count grew past this ratio comes back
+};
+
+class GiveUpLedger {
+ public:
+  explicit GiveUpLedger(GiveUpRules rules = {}) : rules_(rules) {}
+
+  // The target stayed incomplete after being observed from `spot`; `voxels` is its current
+  // voxel count. Returns true when this gives it up.
+  bool observed(uint64_t key, const Eigen::Vector3d& spot, int voxels);
+  // A try that did not observe it (the robot was blocked or stuck on the way).
+  bool failed(uint64_t key, int voxels);
+  // A teammate gave it up at this voxel count (the larger count wins, so it comes back later).
+  void merge(uint64_t key, int voxels);
+
+  // Whether the team no longer makes views for the target, given its current voxel count.
+  bool given_up(uint64_t key, int current_voxels) const;
+  // key -> voxel count when given up (what the team solution shares), in no order.
+  const std::unordered_map<uint64_t, int>& given_up_targets() const { return given_up_; }
+  // Tries so far (observed or failed) per target.
+  int attempts(uint64_t key) const;
+  std::unordered_map<uint64_t, int> attempt_counts() const;
+  const GiveUpRules& rules() const { return rules_; }
+
+ private:
+  struct Record {
+    std::vector<Eigen::Vector3d> spots;  // distinct observation spots
+    int attempts = 0;
+  };
+  bool decide(uint64_t key, const Record& r, int voxels);
+
+  GiveUpRules rules_;
+  std::unordered_map<uint64_t, Record> records_;
+  std::unordered_map<uint64_t, int> given_up_;
+};
+
+}  // namespace hexplore::planning

@@ -1,0 +1,219 @@
+#include "common/planning/route_follower.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/planning/executable_path.h"
+
+namespace hexplore::planning {
+namespace {
+
+double horizontal(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return (a - b).head<2>().norm(); }
+
+constexpr double kProgressM = 0.5;    // moving this far counts as progress
+constexpr double kTrailStepM = 0.5;   // trail points are this far apart
+constexpr size_t kTrailLength = 12;
+constexpr double kBackoffM = 1.0;     // back off to a trail point at least this far away
+
+}  // namespace
+
+RouteFollower::RouteFollower(FollowerOptions options, int path_species) : options_(options), species_(path_species) {}
+
+void RouteFollower::set_route(std::vector<TaskView> route) {
+  const bool keep_observing =
+      observing_ && !route.empty() && horizontal(route.front().position, observe_spot_) <= options_.reach_m;
+  if (observing_ && !keep_observing) {
+    // Interrupted: what was seen for at least half the dwell still counts as an observation.
+    if (last_step_s_ - observe_start_s_ >= 0.5 * (observe_until_s_ - observe_start_s_))
+      pending_.push_back({observed_targets_, observe_spot_, last_step_s_ + options_.settle_s});
+    observing_ = false;
+  }
+  route_ = std::move(route);
+  next_ = keep_observing ? 1 : 0;
+  driving_ = false;
+  progress_s_ = -1.0;
+}
+
+std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector3d& position, DriveState state,
+                                               const highlevel::HighLevelMap& map,
+                                               const std::unordered_set<uint64_t>& keep_off, GiveUpLedger& ledger) {
+  if (observing_) counters_.observing_s += std::max(0.0, now_s - last_step_s_);
+  last_step_s_ = now_s;
+  judge(now_s, map, ledger);
+  track_progress(now_s, position, state);
+
+  if (observing_) {
+    if (now_s >= observe_until_s_) {
+      finish_observing(now_s, position);
+      return drive(position, map, keep_off);
+    }
+    const double per_aim = (observe_until_s_ - observe_start_s_) / double(aims_.size());
+    const size_t index = std::min(aims_.size() - 1, size_t((now_s - observe_start_s_) / per_aim));
+    return index != aim_index_ ? aim(index, position) : std::nullopt;
+  }
+  if (next_ >= route_.size()) return std::nullopt;
+  if (horizontal(route_[next_].position, position) <= options_.reach_m) {
+    std::optional<MotionOrder> order = begin_observing(now_s, position, map);
+    return observing_ ? order : drive(position, map, keep_off);  // ground views: on to the next
+  }
+  if (!driving_) return drive(position, map, keep_off);
+  const bool blocked = blocked_since_s_ >= 0.0 && now_s - blocked_since_s_ >= options_.blocked_s;
+  const bool stuck = progress_s_ >= 0.0 && now_s - progress_s_ >= options_.stuck_s;
+  if (!blocked && !stuck) return std::nullopt;
+  skip_current(position, map, ledger);
+  return drive(position, map, keep_off);
+}
+
+std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Eigen::Vector3d& position,
+                                                          const highlevel::HighLevelMap& map) {
+  // Every consecutive view within reach is observed from here at once.
+  observed_targets_.clear();
+  aims_.clear();
+  int facade_views = 0;
+  for (; next_ < route_.size() && horizontal(route_[next_].position, position) <= options_.reach_m; ++next_) {
+    const TaskView& v = route_[next_];
+    ++counters_.views_reached;
+    observed_targets_.insert(observed_targets_.end(), v.targets.begin(), v.targets.end());
+    if (!v.facade) continue;
+    ++facade_views;
+    aims_.push_back(v.look_at);  // the view's own target first
+    for (uint64_t t : v.targets)
+      if (const highlevel::Supervoxel* sv = map.find(t); sv && sv->facade() && (sv->center - v.look_at).norm() > 0.3)
+        aims_.push_back(sv->center);
+  }
+  driving_ = false;
+  const double dwell = facade_views * options_.observation_time_s;
+  if (dwell <= 0.0) {  // ground views: observed on arrival
+    pending_.push_back({observed_targets_, position, now_s + options_.settle_s});
+    return std::nullopt;
+  }
+  // A sweep gives each aim at least min_aim_s; with less time, the first aims only.
+  const size_t fit = std::max<size_t>(1, size_t(dwell / std::max(1e-3, options_.min_aim_s)));
+  if (aims_.size() > fit) aims_.resize(fit);
+  observing_ = true;
+  observe_start_s_ = now_s;
+  observe_until_s_ = now_s + dwell;
+  observe_spot_ = position;
+  ++counters_.views_observed;
+  return aim(0, position);
+}
+
+std::optional<MotionOrder> RouteFollower::aim(size_t target_index, const Eigen::Vector3d& position) {
+  aim_index_ = target_index;
+  MotionOrder order;
+  order.observing = true;
+  order.path.valid = true;
+  order.path.waypoints = {position};
+  order.path.goal.position = position;
+  order.path.goal.look_at = aims_[target_index];
+  order.path.goal.facade = true;
+  return order;
+}
+
+void RouteFollower::finish_observing(double now_s, const Eigen::Vector3d& position) {
+  pending_.push_back({observed_targets_, observe_spot_, now_s + options_.settle_s});
+  observing_ = false;
+  progress_pos_ = position;
+  progress_s_ = now_s;
+}
+
+std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
+                                                const std::unordered_set<uint64_t>& keep_off) {
+  std::unordered_set<uint64_t> avoid = avoid_;
+  avoid.insert(keep_off.begin(), keep_off.end());
+  const size_t first = next_;
+  for (; next_ < route_.size(); ++next_) {
+    ExecutablePlan path = executable_path(map.graph(), position, species_, route_[next_], &avoid);
+    if (!path.valid) {
+      // No way there from here for us (maybe only around a spot we were blocked at): skip it
+      // without counting it against the target, which a teammate may reach.
+      ++counters_.views_without_path;
+      continue;
+    }
+    path_keys_ = path.keys;
+    path_points_ = path.waypoints;
+    if (backoff_) {
+      path.waypoints.insert(path.waypoints.begin(), *backoff_);
+      backoff_.reset();
+    }
+    driving_ = true;
+    progress_pos_ = position;
+    progress_s_ = last_step_s_;
+    blocked_since_s_ = -1.0;
+    return MotionOrder{std::move(path), false};
+  }
+  if (!avoid_.empty()) {
+    // The spots we avoid cut us off from every view: forget them and try the route again.
+    avoid_.clear();
+    next_ = first;
+    return drive(position, map, keep_off);
+  }
+  driving_ = false;
+  if (!backoff_) return std::nullopt;
+  // Nowhere to go from here on the graph: at least leave the spot we are stuck at.
+  MotionOrder out;
+  out.path.valid = true;
+  out.path.waypoints = {*backoff_};
+  out.path.goal.position = *backoff_;
+  backoff_.reset();
+  return out;
+}
+
+void RouteFollower::skip_current(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
+                                 GiveUpLedger& ledger) {
+  if (blocked_seen_ || blocked_since_s_ >= 0.0) {
+    // Keep off the vertex we were driving to when blocked: the path point after the one nearest to us.
+    size_t near = 0;
+    for (size_t i = 1; i < path_points_.size(); ++i)
+      if (horizontal(path_points_[i], position) < horizontal(path_points_[near], position)) near = i;
+    for (size_t i = near; i < path_keys_.size(); ++i)
+      if (horizontal(path_points_[i], position) > 0.4) {
+        avoid_.insert(path_keys_[i]);
+        break;
+      }
+  }
+  // Whatever holds us here, leave the way we came before heading for the next view.
+  for (auto it = trail_.rbegin(); it != trail_.rend(); ++it)
+    if (horizontal(*it, position) >= kBackoffM) {
+      backoff_ = *it;
+      break;
+    }
+  for (uint64_t t : route_[next_].targets) {
+    const highlevel::Supervoxel* sv = map.find(t);
+    if (sv && !sv->covered) ledger.failed(t, sv->voxel_count);
+  }
+  ++counters_.views_skipped;
+  ++next_;
+  driving_ = false;
+  blocked_since_s_ = -1.0;
+  blocked_seen_ = false;
+}
+
+void RouteFollower::track_progress(double now_s, const Eigen::Vector3d& position, DriveState state) {
+  if (trail_.empty() || horizontal(trail_.back(), position) >= kTrailStepM) {
+    trail_.push_back(position);
+    if (trail_.size() > kTrailLength) trail_.erase(trail_.begin());
+  }
+  if (!driving_ || progress_s_ < 0.0 || horizontal(position, progress_pos_) > kProgressM) {
+    progress_pos_ = position;
+    progress_s_ = now_s;
+    blocked_seen_ = false;
+  }
+  if (state != DriveState::kBlocked) blocked_since_s_ = -1.0;
+  else if (blocked_since_s_ < 0.0) blocked_since_s_ = now_s;
+  blocked_seen_ = blocked_seen_ || state == DriveState::kBlocked;
+}
+
+void RouteFollower::judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger) {
+  auto due = [&](const PendingCheck& c) { return c.due_s <= now_s; };
+  for (const PendingCheck& c : pending_) {
+    if (!due(c)) continue;
+    for (uint64_t t : c.targets) {
+      const highlevel::Supervoxel* sv = map.find(t);
+      if (sv && !sv->covered) ledger.observed(t, c.spot, sv->voxel_count);
+    }
+  }
+  pending_.erase(std::remove_if(pending_.begin(), pending_.end(), due), pending_.end());
+}
+
+}  // namespace hexplore::planning

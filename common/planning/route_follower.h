@@ -1,0 +1,128 @@
+#pragma once
+// Executes one robot's exploration route the way the cost model assumes (paper eq.
+// 4-xx-delta charges 1 / observation speed per facade view): drive to the next view along
+// its executable path, stop there and point the sensors at the view's targets for the
+// species' observation time (the gimbal of a long-range LiDAR sweeps them one after the
+// other), then move on. A ground view is done on arrival ("observed once a robot reaches its
+// centre"). Whether the targets got complete is judged a settle time later, when the map has
+// caught up with the scans, and what stayed incomplete counts as an attempt in the team's
+// GiveUpLedger.
+// When the robot is blocked or makes no progress, the view is skipped (an attempt too), the
+// vertex it could not reach is kept off by later paths, and the next path first backs off
+// along the robot's recent trail. No sockets: the planning service feeds it poses and the
+// map and publishes what it returns.
+
+#include <cstdint>
+#include <optional>
+#include <unordered_set>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "common/highlevel/high_level_map.h"
+#include "common/planning/give_up_ledger.h"
+#include "common/planning/planning_types.h"
+
+namespace hexplore::planning {
+
+struct FollowerOptions {
+  double reach_m = 1.0;             // a view counts as reached within this horizontal distance
+  double blocked_s = 2.0;           // blocked by terrain this long: skip the view
+  double stuck_s = 8.0;             // no 0.5 m of progress this long: skip the view
+  double observation_time_s = 0.0;  // dwell at a facade view: 1 / vartheta_varsigma of the species
+  double min_aim_s = 0.5;           // shortest time the sensors stay on one target of a sweep
+  double settle_s = 2.0;            // map lag: coverage is judged this long after the observation
+};
+
+// How the driver reports its motion (a v1::MotionState without the protobuf).
+enum class DriveState { kIdle, kMoving, kBlocked, kStopped };
+
+// What the robot should do now: follow `path` (its goal's look_at aims the sensors). While
+// observing, the path is the spot the robot stands on.
+struct MotionOrder {
+  ExecutablePlan path;
+  bool observing = false;
+};
+
+struct FollowerCounters {
+  int views_reached = 0;
+  int views_observed = 0;       // facade views dwelt at
+  int views_skipped = 0;        // blocked or stuck on the way
+  int views_without_path = 0;   // no path from here
+  double observing_s = 0.0;     // time spent standing and observing
+};
+
+class RouteFollower {
+ public:
+  // `path_species`: the species index whose graph levels the paths use.
+  RouteFollower(FollowerOptions options, int path_species);
+
+  // A new route (a planning round). When the robot is observing a view and the new route
+  // starts at the same spot, the observation goes on where it was.
+  void set_route(std::vector<TaskView> route);
+  void set_path_species(int species) { species_ = species; }
+
+  // One control cycle at sim time `now_s`. Returns the order to send when it changed (a new
+  // path, a new aim); nullopt when the last order stands. `keep_off`: vertices no path may
+  // enter besides those the robot was blocked at (e.g. around a silent teammate).
+  std::optional<MotionOrder> step(double now_s, const Eigen::Vector3d& position, DriveState state,
+                                  const highlevel::HighLevelMap& map, const std::unordered_set<uint64_t>& keep_off,
+                                  GiveUpLedger& ledger);
+
+  // No view left to drive to or observe (observations may still be settling).
+  bool finished() const { return next_ >= route_.size() && !observing_; }
+  size_t views_left() const { return route_.size() - std::min(route_.size(), next_) + (observing_ ? 1 : 0); }
+  bool observing() const { return observing_; }
+  const std::vector<TaskView>& route() const { return route_; }
+  const FollowerCounters& counters() const { return counters_; }
+
+ private:
+  struct PendingCheck {  // targets observed from `spot`, judged at `due_s`
+    std::vector<uint64_t> targets;
+    Eigen::Vector3d spot;
+    double due_s;
+  };
+
+  std::optional<MotionOrder> drive(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
+                                   const std::unordered_set<uint64_t>& keep_off);
+  std::optional<MotionOrder> begin_observing(double now_s, const Eigen::Vector3d& position,
+                                             const highlevel::HighLevelMap& map);
+  std::optional<MotionOrder> aim(size_t target_index, const Eigen::Vector3d& position);
+  void finish_observing(double now_s, const Eigen::Vector3d& position);
+  void skip_current(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
+  void track_progress(double now_s, const Eigen::Vector3d& position, DriveState state);
+  void judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
+
+  FollowerOptions options_;
+  int species_;
+  std::vector<TaskView> route_;
+  size_t next_ = 0;  // the view being driven to
+
+  // Observing: the view(s) reached, their facade targets' centres to aim at, the clock.
+  bool observing_ = false;
+  std::vector<uint64_t> observed_targets_;
+  std::vector<Eigen::Vector3d> aims_;
+  size_t aim_index_ = 0;
+  double observe_start_s_ = 0.0;
+  double observe_until_s_ = 0.0;
+  Eigen::Vector3d observe_spot_ = Eigen::Vector3d::Zero();
+  double last_step_s_ = 0.0;
+
+  std::vector<PendingCheck> pending_;
+
+  // Driving: progress, blocked time, the trail to back off along, vertices to avoid.
+  bool driving_ = false;  // a path to route_[next_] was sent
+  Eigen::Vector3d progress_pos_ = Eigen::Vector3d::Zero();
+  double progress_s_ = -1.0;
+  double blocked_since_s_ = -1.0;
+  bool blocked_seen_ = false;
+  std::vector<Eigen::Vector3d> trail_;
+  std::optional<Eigen::Vector3d> backoff_;
+  std::unordered_set<uint64_t> avoid_;
+  std::vector<uint64_t> path_keys_;
+  std::vector<Eigen::Vector3d> path_points_;
+
+  FollowerCounters counters_;
+};
+
+}  // namespace hexplore::planning
