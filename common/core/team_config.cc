@@ -69,6 +69,7 @@ SpeciesConfig builtin_slugcat() {
   panoramic.horizontal_step_deg = 0.2;  // 1,800 columns x 120 lines = 216,000 rays
   panoramic.max_range_m = 40.0;
   panoramic.mount_offset_m = {0.0, 0.0, 0.35};
+  panoramic.non_repetitive = true;  // stands in for three Livox Mid360
   s.lidars.push_back(panoramic);
   return s;
 }
@@ -97,6 +98,7 @@ SpeciesConfig builtin_mr1000() {
   horizon.max_range_m = 90.0;
   horizon.mount_offset_m = {0.1, 0.0, 0.9};
   horizon.gimbal = true;
+  horizon.non_repetitive = true;  // a Livox Horizon
   LidarConfig near_ground;
   near_ground.name = "near_ground";
   near_ground.lines = 80;
@@ -107,6 +109,7 @@ SpeciesConfig builtin_mr1000() {
   near_ground.horizontal_step_deg = 0.5;
   near_ground.max_range_m = 40.0;
   near_ground.mount_offset_m = {0.1, 0.0, 0.7};
+  near_ground.non_repetitive = true;  // a Livox Mid360
   s.lidars = {horizon, near_ground};
   return s;
 }

@@ -31,6 +31,10 @@ struct LidarConfig {
   Eigen::Vector3d mount_offset_m = Eigen::Vector3d::Zero();  // sensor origin in the body frame
   double mount_pitch_deg = 0.0;         // fixed mount pitch (positive = nose up)
   bool gimbal = false;                  // yaw/pitch gimbal that aims the sensor at a target
+  // Livox-style non-repetitive scanning: each frame's pattern is turned by a random fraction
+  // of the line spacing and column step, so a sensor that stands still keeps filling the gaps
+  // between its lines (a rotating LiDAR's fixed pattern would hit the same points forever).
+  bool non_repetitive = false;
 
   int rays_per_frame() const;
 };
@@ -80,6 +84,10 @@ struct AlgorithmParams {
   // Perception map.
   double map_resolution_m = 0.15;
   double rho_th = 0.3;                   // observation-density threshold, points per cm^2 (see perception/map_params.h)
+  // rho(v) counts every point of the voxel (the density of its point cloud, the paper's "number
+  // of measurement points per unit area"); false: only points of observations that meet the
+  // angle and distance thresholds (common/planning/README.md has the measured difference).
+  bool rho_all_points = true;
   double gamma_th_deg = 45.0;            // observation-angle threshold (facade voxels)
   // Observation-angle threshold for ground voxels. Not in the paper's table: a LiDAR mounted
   // below 1 m sees the floor at grazing angles, and with 45 deg a floor voxel would need the

@@ -85,7 +85,8 @@ class Reader {
 LidarConfig read_lidar(const Reader& r, const YAML::Node& n, const std::string& path) {
   r.only_keys(n, path, {"name", "lines", "vertical_min_deg", "vertical_max_deg", "horizontal_min_deg",
                         "horizontal_max_deg", "horizontal_step_deg", "min_range_m", "max_range_m",
-                        "range_noise_stddev_m", "mount_offset_m", "mount_pitch_deg", "gimbal"});
+                        "range_noise_stddev_m", "mount_offset_m", "mount_pitch_deg", "gimbal",
+                        "non_repetitive"});
   LidarConfig l;
   r.read(n, path, "name", l.name);
   r.read(n, path, "lines", l.lines);
@@ -100,6 +101,7 @@ LidarConfig read_lidar(const Reader& r, const YAML::Node& n, const std::string& 
   r.read_vec3(n, path, "mount_offset_m", l.mount_offset_m);
   r.read(n, path, "mount_pitch_deg", l.mount_pitch_deg);
   r.read(n, path, "gimbal", l.gimbal);
+  r.read(n, path, "non_repetitive", l.non_repetitive);
   return l;
 }
 
@@ -160,12 +162,13 @@ void read_transport(const Reader& r, const YAML::Node& n, TransportConfig& t) {
 
 void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   const std::string path = "params";
-  r.only_keys(n, path, {"map_resolution_m", "rho_th", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg",
+  r.only_keys(n, path, {"map_resolution_m", "rho_th", "rho_all_points", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg",
                         "beta_i", "beta_l", "beta_zeta", "beta_varsigma", "beta_e", "beta_c", "beta_m", "beta_d",
                         "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "ga_population",
                         "ga_max_generations", "ga_time_budget_s", "planner", "seed"});
   r.read(n, path, "map_resolution_m", p.map_resolution_m);
   r.read(n, path, "rho_th", p.rho_th);
+  r.read(n, path, "rho_all_points", p.rho_all_points);
   r.read(n, path, "gamma_th_deg", p.gamma_th_deg);
   r.read(n, path, "gamma_th_ground_deg", p.gamma_th_ground_deg);
   r.read(n, path, "s_th_deg", p.s_th_deg);

@@ -257,7 +257,8 @@ core::CoverageGap PerceptionMap::coverage_gap(const VoxelData& d) const {
   }
   // The threshold follows the current normal (ground or facade), which may have turned since.
   if (d.obs_angle_cdeg / 100.0 >= angle_th) return core::CoverageGap::kAngle;
-  if (d.obs_points * params_.density_per_point() <= params_.rho_th) return core::CoverageGap::kDensity;
+  const uint32_t points = params_.density_from_all_points ? d.count : d.obs_points;
+  if (points * params_.density_per_point() <= params_.rho_th) return core::CoverageGap::kDensity;
   return core::CoverageGap::kNone;
 }
 

@@ -129,6 +129,7 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
 
   std::optional<ReferenceSolution> ref;
   if (auto i = select_reference(req.shared)) ref = req.shared[*i];
+  if (ref) out.reference_source = ref->source_robot;
   std::vector<std::vector<Eigen::Vector3d>> ref_lines(req.robots.size());
   if (ref)
     for (size_t r = 0; r < req.robots.size(); ++r)

@@ -67,6 +67,7 @@ struct PlanResult {
   int dropped_clusters = 0;       // clusters no robot can reach or serve
   int open_views = 0;             // views in clusters some robot can serve (0 = nothing left to do)
   std::optional<double> agreement;  // share of clusters assigned as in the reference
+  std::string reference_source;     // whose shared solution was the reference ("" = none)
   StageTimes times;
   ViewGenerationStats view_stats;
 

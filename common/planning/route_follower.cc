@@ -20,18 +20,16 @@ constexpr double kBackoffM = 1.0;     // back off to a trail point at least this
 RouteFollower::RouteFollower(FollowerOptions options, int path_species) : options_(options), species_(path_species) {}
 
 void RouteFollower::set_route(std::vector<TaskView> route) {
-  const bool keep_observing =
-      observing_ && !route.empty() && horizontal(route.front().position, observe_spot_) <= options_.reach_m;
-  if (observing_ && !keep_observing) {
-    // Interrupted: what was seen for at least half the dwell still counts as an observation.
-    if (last_step_s_ - observe_start_s_ >= 0.5 * (observe_until_s_ - observe_start_s_))
-      pending_.push_back({observed_targets_, observe_spot_, last_step_s_ + options_.settle_s});
-    observing_ = false;
-  }
   route_ = std::move(route);
-  next_ = keep_observing ? 1 : 0;
+  next_ = 0;
   driving_ = false;
   progress_s_ = -1.0;
+  // An observation in progress is finished first (the cost model paid for it); views of the
+  // new route at the spot being observed are part of it.
+  while (observing_ && next_ < route_.size() && horizontal(route_[next_].position, observe_spot_) <= options_.reach_m) {
+    const auto& targets = route_[next_++].targets;
+    observed_targets_.insert(observed_targets_.end(), targets.begin(), targets.end());
+  }
 }
 
 std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector3d& position, DriveState state,

@@ -57,8 +57,8 @@ class RouteFollower {
   // `path_species`: the species index whose graph levels the paths use.
   RouteFollower(FollowerOptions options, int path_species);
 
-  // A new route (a planning round). When the robot is observing a view and the new route
-  // starts at the same spot, the observation goes on where it was.
+  // A new route (a planning round). An observation in progress is finished first; the new
+  // route's views at the same spot join it.
   void set_route(std::vector<TaskView> route);
   void set_path_species(int species) { species_ = species; }
 

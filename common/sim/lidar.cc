@@ -74,7 +74,22 @@ LidarScan LidarModel::scan(const RayCaster& caster, const Eigen::Isometry3d& bod
   out.sensor_pose = sensor_pose(body_pose);
   out.origin = out.sensor_pose.translation();
   out.rays = dirs_.size();
-  const Eigen::Matrix3f r = out.sensor_pose.linear().cast<float>();
+  Rng pick(noise_state_);
+  noise_state_ = pick.next();
+  Eigen::Matrix3d pattern = Eigen::Matrix3d::Identity();
+  if (config_.non_repetitive) {
+    // Turn the pattern by up to one column step in azimuth and half a line spacing in tilt
+    // (about both horizontal axes, so the elevation shift varies with azimuth).
+    const int lines = std::max(1, config_.lines);
+    const double spacing = lines > 1 ? (config_.vertical_max_deg - config_.vertical_min_deg) / (lines - 1) : 1.0;
+    const double yaw = pick.uniform() * config_.horizontal_step_deg * kDeg;
+    const double pitch = (pick.uniform() - 0.5) * spacing * kDeg;
+    const double roll = (pick.uniform() - 0.5) * spacing * kDeg;
+    pattern = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+               Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+                  .toRotationMatrix();
+  }
+  const Eigen::Matrix3f r = (out.sensor_pose.linear() * pattern).cast<float>();
   const Eigen::Vector3f o = out.origin.cast<float>();
   for (size_t i = 0; i < dirs_.size(); ++i) world_dirs_[i] = r * dirs_[i];
   const float max_range = static_cast<float>(config_.max_range_m);
@@ -104,8 +119,6 @@ LidarScan LidarModel::scan(const RayCaster& caster, const Eigen::Isometry3d& bod
     }
   }
 
-  Rng pick(noise_state_);
-  noise_state_ = pick.next();
   size_t n = pick.next() % kNoiseTable;
   const float sigma = static_cast<float>(config_.range_noise_stddev_m);
   const float min_range = static_cast<float>(config_.min_range_m);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <sstream>
 
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
@@ -62,6 +64,11 @@ void PlanningService::setup(service::ServiceContext& context) {
   }
 
   const auto& args = context.arguments();
+  if (auto it = args.find("trace-dir"); it != args.end()) {
+    const std::string path = it->second + "/planning-" + robot_id_ + ".jsonl";
+    trace_.open(path);
+    if (!trace_) throw std::invalid_argument("planning: --trace-dir: cannot write " + path);
+  }
   if (auto it = args.find("wait-for-start"); it != args.end()) {
     if (it->second == "true") mission_active_ = false;
     else if (it->second != "false")
@@ -131,6 +138,7 @@ void PlanningService::setup(service::ServiceContext& context) {
                              [this](const transport::Received<v1::FusedMapUpdate>& r) { on_map(r.message); });
   sub.on<v1::RobotPose>(topics::pose(robot_id_), [this](const transport::Received<v1::RobotPose>& r) {
     positions_[robot_id_] = position_of(r.message);
+    odometry_m_ = r.message.odometry_m();
     if (r.header.sim_time_ns() > 0) sim_time_ns_ = r.header.sim_time_ns();
     own_motion_ = r.message.state();
   });
@@ -316,7 +324,7 @@ void PlanningService::cycle() {
   std::string reason;
   if (last_plan_ns_ == 0) reason = "first round";
   else if (follower_->finished() && age_s >= min_replan_s_) reason = "route finished";
-  else if (age_s >= eta_t_s_) reason = "route timed out";
+  else if (age_s >= eta_t_s_ && !follower_->observing()) reason = "route timed out";  // not mid-observation
   else if (peer_finished_ && age_s >= min_replan_s_) reason = "teammate finished its route";
   if (!reason.empty()) replan(reason);
 }
@@ -375,6 +383,8 @@ void PlanningService::replan(const std::string& reason) {
         << ", " << first.y() << ", " << first.z() << ")";
   }
 
+  if (trace_.is_open()) write_trace(reason, req, res);
+
   auto& pub = context_->publisher();
   v1::TeamSolution solution = planning::to_proto(res);
   std::vector<std::pair<uint64_t, int>> given_up(ledger_.given_up_targets().begin(), ledger_.given_up_targets().end());
@@ -387,6 +397,35 @@ void PlanningService::replan(const std::string& reason) {
   pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route));
   follower_->set_route(route);
   follow_route();  // the path to the first view at once
+}
+
+void PlanningService::write_trace(const std::string& reason, const planning::PlanRequest& req,
+                                  const planning::PlanResult& res) {
+  auto vec = [](const Eigen::Vector3d& p) {
+    char b[96];
+    std::snprintf(b, sizeof(b), "[%.2f, %.2f, %.2f]", p.x(), p.y(), p.z());
+    return std::string(b);
+  };
+  const planning::RobotPlan& mine = res.robots[size_t(req.self)];
+  const planning::FollowerCounters& f = follower_->counters();
+  std::ostringstream j;
+  j << "{\"t\": " << core::ns_to_s(now_ns()) << ", \"round\": " << round_ << ", \"reason\": \"" << reason
+    << "\", \"planner\": \"" << active_name_ << "\", \"position\": " << vec(positions_.at(robot_id_))
+    << ", \"odometry_m\": " << odometry_m_ << ", \"live\": " << req.robots.size() << ", \"views\": " << res.views
+    << ", \"clusters\": " << res.clusters << ", \"open_views\": " << res.open_views
+    << ", \"given_up\": " << ledger_.given_up_targets().size() << ", \"reference\": \"" << res.reference_source
+    << "\", \"agreement\": " << res.agreement.value_or(-1.0) << ", \"time_s\": " << res.times.total_s
+    << ", \"own_clusters\": [";
+  for (size_t i = 0; i < mine.cluster_centers.size(); ++i) j << (i ? ", " : "") << vec(mine.cluster_centers[i]);
+  j << "], \"route\": [";
+  for (size_t i = 0; i < mine.route.size(); ++i)
+    j << (i ? ", " : "") << "{\"p\": " << vec(mine.route[i].position) << ", \"facade\": " << (mine.route[i].facade ? 1 : 0)
+      << ", \"targets\": " << mine.route[i].targets.size() << "}";
+  j << "], \"follower\": {\"reached\": " << f.views_reached << ", \"observed\": " << f.views_observed
+    << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
+    << ", \"observing_s\": " << f.observing_s << "}}\n";
+  trace_ << j.str();
+  trace_.flush();
 }
 
 v1::OpenTargetsReport PlanningService::open_targets_report() const {

@@ -13,6 +13,7 @@
 // given-up set travels with the team solution, so every planner agrees on what is left.
 
 #include <cstdint>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -43,7 +44,7 @@ class PlanningService : public service::Service {
   // --peer-timeout-s X (default 5.0, wall time), --peer-stuck-s X (default 30.0); the
   // follower's --reach-m X (1.0), --blocked-s X (2.0), --stuck-s X (8.0), --settle-s X (2.0),
   // --observe true|false (dwell at facade views, default true); the ledger's
-  // --give-up-views N (2) and --give-up-attempts N (3).
+  // --give-up-views N (2) and --give-up-attempts N (3); --trace-dir DIR (per-round traces).
   void setup(service::ServiceContext& context) override;
   void fill_status(v1::ServiceStatus& status) override;
 
@@ -64,6 +65,8 @@ class PlanningService : public service::Service {
   planning::DriveState drive_state() const;
   int64_t now_ns() const;  // sim time when the driver stamps it, else the loop's clock
   v1::OpenTargetsReport open_targets_report() const;
+  // One JSON line per round into --trace-dir/planning-<robot>.jsonl (per-round traces).
+  void write_trace(const std::string& reason, const planning::PlanRequest& req, const planning::PlanResult& res);
   // The vertices our paths keep off besides those the follower was blocked at: those within
   // reach of the body of a teammate gone silent (its services died; the robot still stands
   // where it was last heard, and no safety layer reports it any more).
@@ -96,7 +99,9 @@ class PlanningService : public service::Service {
   std::unique_ptr<planning::RouteFollower> follower_;  // executes our route
   int species_index_ = 0;
   int own_motion_ = 0;                                // our last v1::MotionState
-  int64_t sim_time_ns_ = 0;                           // latest sim time from our pose
+  int64_t sim_time_ns_ = 0;
+  double odometry_m_ = 0.0;                           // distance driven, from our driver
+  std::ofstream trace_;                           // latest sim time from our pose
   int64_t last_plan_sim_ns_ = 0;
 
   bool mission_active_ = true;

@@ -1,0 +1,268 @@
+// Does a task view do what the planner assumes? On a built-in scene, each species first
+// surveys the site (one frame from every few metres of the ground it can reach, as a robot
+// would see it in passing), the survey maps become a fused high-level map, and task views
+// are generated from it as in a planning round. Then, for a sample of facade views, a robot
+// of a species the view is labelled for stands at the view, points its sensors at the
+// view's target and scans for the species' observation time; the figures say how often the
+// target supervoxel became complete (Q = 1), how far its voxels got, and what the others
+// still lack (core::CoverageGap). Exploration finishes only if this is high.
+//
+// Usage: bench_view_efficacy [--scene single-building] [--views 60] [--scan-hz 2]
+//                            [--dwell-s S (default: the species' 1 / observation speed)]
+//                            [--survey-spacing-m 4] [--seed 1] [--lidar-pattern livox|fixed]
+//                            [--density all|qualifying] [--rho-th X] [--verbose true]
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <unordered_map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/core/team_config.h"
+#include "common/highlevel/map_fusion.h"
+#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/segmenter.h"
+#include "common/perception/perception_map.h"
+#include "common/perception/voxel_proto.h"
+#include "common/planning/capabilities.h"
+#include "common/planning/labels.h"
+#include "common/planning/mtsp_problem.h"
+#include "common/planning/round_inputs.h"
+#include "common/sim/lidar.h"
+#include "common/sim/observability.h"
+#include "common/sim/ray_caster.h"
+#include "common/sim/scenes.h"
+
+namespace {
+
+using namespace hexplore;
+
+struct Args {
+  std::string scene = "single-building";
+  int views = 60;
+  double scan_hz = 2.0;
+  double dwell_s = -1.0;
+  double survey_spacing_m = 4.0;
+  uint64_t seed = 1;
+  bool fixed_pattern = false;
+  bool verbose = false;        // one line per view
+  bool density_all = false;    // rho from every point of the voxel
+  bool density_set = false;
+  double rho_th = -1.0;        // overrides the team default
+  double extent_m = -1.0;      // overrides PlannerOptions::target_half_extent_m  // rotating LiDARs with a repetitive pattern instead of Livox-style
+};
+
+Args parse(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string k = argv[i], v = argv[i + 1];
+    if (k == "--scene") a.scene = v;
+    else if (k == "--views") a.views = std::atoi(v.c_str());
+    else if (k == "--scan-hz") a.scan_hz = std::atof(v.c_str());
+    else if (k == "--dwell-s") a.dwell_s = std::atof(v.c_str());
+    else if (k == "--survey-spacing-m") a.survey_spacing_m = std::atof(v.c_str());
+    else if (k == "--seed") a.seed = std::strtoull(v.c_str(), nullptr, 10);
+    else if (k == "--lidar-pattern") a.fixed_pattern = v == "fixed";
+    else if (k == "--verbose") a.verbose = v == "true";
+    else if (k == "--density") a.density_all = v == "all", a.density_set = true;
+    else if (k == "--rho-th") a.rho_th = std::atof(v.c_str());
+    else if (k == "--extent-m") a.extent_m = std::atof(v.c_str());
+    else {
+      std::fprintf(stderr, "unknown option %s\n", k.c_str());
+      std::exit(2);
+    }
+  }
+  return a;
+}
+
+// One robot of a species with its LiDARs, its perception map and the supervoxels of it.
+struct Robot {
+  core::SpeciesConfig species;
+  std::vector<sim::LidarModel> lidars;
+  std::unique_ptr<perception::PerceptionMap> map;
+  std::unique_ptr<highlevel::SupervoxelSegmenter> segmenter;
+
+  // Scans one frame of every LiDAR from a body standing at ground point `g`, aimed at `aim`.
+  void scan_from(const sim::RayCaster& caster, const Eigen::Vector3d& g, const Eigen::Vector3d& aim) {
+    Eigen::Isometry3d body = Eigen::Isometry3d::Identity();
+    body.translation() = g + Eigen::Vector3d(0, 0, species.body_half_extents_m.z());
+    for (sim::LidarModel& lidar : lidars) {
+      lidar.aim_at(aim, body);
+      const sim::LidarScan s = lidar.scan(caster, body);
+      perception::ScanPoints in;
+      in.sensor_origin = s.origin;
+      in.xyz = reinterpret_cast<const float*>(s.points.data());
+      in.count = s.points.size();
+      in.max_range_m = lidar.config().max_range_m;
+      map->integrate(in, {});
+    }
+  }
+  // Feeds the map's changes to the segmenter, as mapping -> hlmap does (through the wire form).
+  highlevel::SegmentationChange segment() {
+    std::vector<highlevel::VoxelSample> samples;
+    for (const perception::VoxelView& v : map->take_changes()) {
+      v1::Voxel m;
+      perception::to_proto(v, &m);
+      samples.push_back(highlevel::from_proto(m));
+    }
+    return segmenter->update(samples);
+  }
+  highlevel::MapUpdate contribution() const {
+    highlevel::MapUpdate u;
+    u.full_snapshot = true;
+    for (const auto& [key, sv] : segmenter->supervoxels()) u.upserts.push_back(highlevel::wire_rounded(sv));
+    u.edge_upserts = segmenter->edges();
+    return u;
+  }
+};
+
+struct Outcome {
+  int tested = 0, completed = 0;
+  double before = 0.0, after = 0.0;  // summed covered fractions
+  int over90 = 0;                    // >= 90 % of its voxels complete afterwards
+  std::map<core::CoverageGap, int> gap_after;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Args args = parse(argc, argv);
+  const sim::SceneInfo scene = sim::generate_scene(args.scene, args.seed);
+  const sim::RayCaster caster(scene.mesh);
+  core::TeamConfig team;
+  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
+  if (args.fixed_pattern)
+    for (auto& s : team.species)
+      for (auto& l : s.lidars) l.non_repetitive = false;
+  for (size_t i = 0; i < team.species.size(); ++i)
+    team.robots.push_back({team.species[i].name, team.species[i].name, scene.suggested_starts.at(i), 0});
+  if (args.rho_th >= 0) team.params.rho_th = args.rho_th;
+  const core::AlgorithmParams& params = team.params;
+  const Eigen::Vector3d centre = scene.site.center();
+
+  std::vector<Robot> robots;
+  highlevel::SegmenterParams seg;
+  seg.resolution_m = params.map_resolution_m;
+  seg.eta_s_m = params.eta_s_m;
+  seg.eta_e_m = params.eta_e_m;
+  for (size_t k = 0; k < team.species.size(); ++k) {
+    Robot r;
+    r.species = team.species[k];
+    for (size_t i = 0; i < r.species.lidars.size(); ++i) r.lidars.emplace_back(r.species.lidars[i], 11 + 7 * k + i);
+    perception::MapParams mp = perception::make_map_params(params, team.species, r.species);
+    if (args.density_set) mp.density_from_all_points = args.density_all;
+    r.map = std::make_unique<perception::PerceptionMap>(mp);
+    r.segmenter = std::make_unique<highlevel::SupervoxelSegmenter>(seg, highlevel::species_levels(team));
+    // Survey: a frame from every survey_spacing of the ground this species reaches, aimed at the site centre.
+    const std::vector<Eigen::Vector3d> starts = {scene.suggested_starts.at(k)};
+    size_t frames = 0;
+    for (const Eigen::Vector3d& g : sim::reachable_ground(caster, r.species, starts, scene.site)) {
+      const double s = args.survey_spacing_m;
+      if (std::fmod(std::abs(g.x()), s) >= 0.5 || std::fmod(std::abs(g.y()), s) >= 0.5) continue;
+      r.scan_from(caster, g, centre);
+      ++frames;
+    }
+    r.segment();
+    std::printf("survey %-8s %4zu frames, %7zu voxels, %6zu supervoxels\n", r.species.name.c_str(), frames,
+                r.map->voxel_count(), r.segmenter->supervoxels().size());
+    robots.push_back(std::move(r));
+  }
+
+  highlevel::MapFusion fusion(highlevel::species_levels(team));
+  for (const Robot& r : robots) fusion.apply(r.species.name, r.contribution());
+  const highlevel::HighLevelMap& fused = fusion.map();
+  const planning::TeamCapabilities caps = planning::capabilities_from(team);
+  planning::PlannerOptions o = planning::PlannerOptions::from(params);
+  o.region = scene.site;
+  if (args.extent_m >= 0) o.target_half_extent_m = args.extent_m;
+  planning::PlanRequest req;
+  req.map = &fused;
+  for (size_t k = 0; k < team.robots.size(); ++k)
+    req.robots.push_back({team.robots[k].id, int(k), scene.suggested_starts.at(k)});
+  const planning::RoundInputs in = planning::prepare_round(req, caps, o);
+  std::vector<const planning::TaskView*> facade;
+  for (const auto& v : in.views)
+    if (v.facade) facade.push_back(&v);
+  int open_facades = 0;
+  for (const auto& [key, sv] : fused.supervoxels()) open_facades += sv.facade() && !sv.covered && o.region.contains(sv.center);
+  std::printf("fused map: %zu supervoxels, %d open facade targets, %zu task views (%zu facade)\n", fused.size(),
+              open_facades, in.views.size(), facade.size());
+
+  // Each species' voxels per supervoxel of its own map (the targets' voxel sets).
+  std::vector<std::unordered_map<uint64_t, std::vector<perception::VoxelKey>>> members(robots.size());
+  for (size_t k = 0; k < robots.size(); ++k)
+    for (const perception::VoxelView& v : robots[k].map->voxels())
+      members[k][robots[k].segmenter->supervoxel_of({v.key.ix, v.key.iy, v.key.iz})].push_back(v.key);
+
+  std::map<std::string, Outcome> outcomes;
+  const size_t step = std::max<size_t>(1, facade.size() / size_t(std::max(1, args.views)));
+  for (size_t i = 0; i < facade.size(); i += step) {
+    const planning::TaskView& v = *facade[i];
+    for (size_t k = 0; k < robots.size(); ++k) {
+      if (v.label != planning::kPublic && v.label != int(k)) continue;
+      if (!in.reachable[k].count(v.ground_key)) continue;
+      Robot& r = robots[k];
+      const highlevel::Supervoxel* mine = r.segmenter->find(v.key);
+      if (!mine || mine->covered) continue;  // this species' own map has no such incomplete supervoxel
+      // A copy of the survey map: the view's frames on top of what the robot knew.
+      Robot trial;
+      trial.species = r.species;
+      trial.lidars = r.lidars;
+      trial.map = std::make_unique<perception::PerceptionMap>(*r.map);
+      const double dwell = args.dwell_s >= 0 ? args.dwell_s : 1.0 / r.species.observation_speed_views_per_s;
+      const int frames = std::max(1, int(std::lround(dwell * args.scan_hz)));
+      const Eigen::Vector3d ground = fused.find(v.ground_key)->center;
+      for (int f = 0; f < frames; ++f) trial.scan_from(caster, ground, v.look_at);
+      // The target's voxels (as the survey segmented them) after the view.
+      const auto& voxels = members[k][v.key];
+      int covered = 0, hit = 0;
+      double short_density = 0.0;
+      std::map<core::CoverageGap, int> gaps;
+      for (const perception::VoxelKey& key : voxels) {
+        const auto view = trial.map->find(key);
+        if (!view) continue;
+        const auto before = r.map->find(key);
+        if (before && view->point_count > before->point_count) ++hit;
+        if (view->covered()) ++covered;
+        else ++gaps[view->coverage_gap];
+        if (view->coverage_gap == core::CoverageGap::kDensity) short_density += view->observation_density;
+      }
+      if (args.verbose) {
+        const highlevel::Supervoxel* t = fused.find(v.key);
+        std::printf("  %-8s view at (%.1f %.1f %.1f) -> target (%.1f %.1f %.1f) %.1f m, n=(%.2f %.2f %.2f): %zu voxels, "
+                    "%d hit, %d complete",
+                    r.species.name.c_str(), ground.x(), ground.y(), ground.z(), t->center.x(), t->center.y(),
+                    t->center.z(), (t->center - ground).norm(), t->normal.x(), t->normal.y(), t->normal.z(),
+                    voxels.size(), hit, covered);
+        for (const auto& [g, n] : gaps) std::printf(", %s %d", std::string(core::to_string(g)).c_str(), n);
+        if (gaps.count(core::CoverageGap::kDensity))
+          std::printf(" (mean density %.3f)", short_density / gaps.at(core::CoverageGap::kDensity));
+        std::printf("\n");
+      }
+      Outcome& out = outcomes[r.species.name];
+      ++out.tested;
+      out.before += double(mine->covered_voxels) / std::max(1, mine->voxel_count);
+      const double frac = double(covered) / std::max<size_t>(1, voxels.size());
+      out.after += frac;
+      out.completed += covered == int(voxels.size()) ? 1 : 0;
+      out.over90 += frac >= 0.9 ? 1 : 0;
+      if (covered < int(voxels.size())) {
+        auto common = std::max_element(gaps.begin(), gaps.end(), [](auto& a, auto& b) { return a.second < b.second; });
+        if (common != gaps.end()) ++out.gap_after[common->first];
+      }
+    }
+  }
+  std::printf("facade views observed for the species' dwell at %.1f Hz:\n", args.scan_hz);
+  for (const auto& [name, out] : outcomes) {
+    if (out.tested == 0) continue;
+    std::printf("  %-8s %3d views: complete %5.1f%%, >= 90%% voxels %5.1f%%, covered voxels %4.1f%% -> %4.1f%%; still open by gap:",
+                name.c_str(), out.tested, 100.0 * out.completed / out.tested, 100.0 * out.over90 / out.tested,
+                100.0 * out.before / out.tested, 100.0 * out.after / out.tested);
+    for (const auto& [gap, n] : out.gap_after) std::printf(" %s %d", std::string(core::to_string(gap)).c_str(), n);
+    std::printf("\n");
+  }
+  return 0;
+}

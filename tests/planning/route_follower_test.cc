@@ -1,0 +1,208 @@
+// The route follower without sockets: driving, dwelling at facade views, judging coverage a
+// settle time later, skipping when blocked; and the give-up ledger's rules.
+#include "common/planning/route_follower.h"
+
+#include <gtest/gtest.h>
+
+#include "common/core/team_config.h"
+#include "common/planning/synthetic_scene.h"
+
+namespace hexplore::planning {
+namespace {
+
+// A flat 12 x 8 m ground grid with one facade supervoxel (key kWall) beside it; the second
+// species index is unused here.
+constexpr uint64_t kWall = 1'000'001;
+
+highlevel::HighLevelMap flat_map() {
+  core::TeamConfig team;
+  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
+  highlevel::HighLevelMap map(highlevel::species_levels(team));
+  SyntheticSceneOptions scene;
+  scene.width_cells = 12;
+  scene.depth_cells = 8;
+  scene.buildings = {};
+  scene.rubble = {};
+  scene.covered_fraction = 0.0;
+  highlevel::MapUpdate u = synthetic_scene(scene);
+  highlevel::Supervoxel wall;
+  wall.key = kWall;
+  wall.center = {6.5, 9.0, 1.5};
+  wall.normal = {0, -1, 0};
+  wall.surface = highlevel::SurfaceClass::kFacade;
+  wall.voxel_count = 40;
+  wall.gap = core::CoverageGap::kDensity;
+  u.upserts.push_back(wall);
+  map.apply(u);
+  return map;
+}
+
+TaskView view_at(const highlevel::HighLevelMap& map, const Eigen::Vector3d& p, bool facade) {
+  const auto key = map.graph().nearest(p, 0);
+  EXPECT_TRUE(key.has_value());
+  TaskView v;
+  v.key = facade ? kWall : *key;
+  v.ground_key = *key;
+  v.position = *map.graph().position(*key);
+  v.facade = facade;
+  v.look_at = facade ? map.find(kWall)->center : v.position;
+  v.targets = {facade ? kWall : *key};
+  return v;
+}
+
+void set_covered(highlevel::HighLevelMap& map, uint64_t key) {
+  highlevel::Supervoxel sv = *map.find(key);
+  sv.covered = true;
+  sv.covered_voxels = sv.voxel_count;
+  sv.gap = core::CoverageGap::kNone;
+  map.apply(highlevel::MapUpdate{.upserts = {sv}});
+}
+
+struct Drive {
+  highlevel::HighLevelMap map = flat_map();
+  GiveUpLedger ledger;
+  FollowerOptions options;
+  std::unordered_set<uint64_t> keep_off;
+  Drive() { options.observation_time_s = 10.0; }
+};
+
+TEST(RouteFollower, DrivesToTheFirstViewAlongItsPath) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView goal = view_at(d.map, {8.5, 4.5, 0}, false);
+  f.set_route({goal});
+  const auto order = f.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(order);
+  EXPECT_FALSE(order->observing);
+  ASSERT_TRUE(order->path.valid);
+  EXPECT_LT((order->path.waypoints.front() - Eigen::Vector3d(1.5, 1.5, 0)).head<2>().norm(), 1.5);
+  EXPECT_EQ(order->path.goal.ground_key, goal.ground_key);
+  EXPECT_FALSE(f.finished());
+  // The order stands until something changes.
+  EXPECT_FALSE(f.step(0.2, {1.6, 1.6, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger));
+}
+
+TEST(RouteFollower, StopsAtAFacadeViewForTheObservationTimeThenMovesOn) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
+  f.set_route({facade, next});
+  const Eigen::Vector3d at = facade.position;
+  const auto order = f.step(0.0, at, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(order);
+  EXPECT_TRUE(order->observing);
+  EXPECT_TRUE(f.observing());
+  ASSERT_EQ(order->path.waypoints.size(), 1u);  // stand where it is
+  EXPECT_TRUE(order->path.goal.look_at.isApprox(facade.look_at));
+  for (double t = 0.2; t < 9.9; t += 0.2) {
+    const auto o = f.step(t, at, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+    EXPECT_TRUE(!o || o->observing) << "left the view after " << t << " s";
+  }
+  const auto leave = f.step(10.1, at, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(leave);
+  EXPECT_FALSE(leave->observing);
+  EXPECT_EQ(leave->path.goal.ground_key, next.ground_key);
+  EXPECT_EQ(f.counters().views_observed, 1);
+  EXPECT_NEAR(f.counters().observing_s, 10.0, 0.3);
+}
+
+TEST(RouteFollower, AGroundViewIsDoneOnArrival) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView ground = view_at(d.map, {4.5, 4.5, 0}, false);
+  const TaskView next = view_at(d.map, {10.5, 4.5, 0}, false);
+  f.set_route({ground, next});
+  const auto order = f.step(0.0, ground.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(order);
+  EXPECT_FALSE(order->observing);
+  EXPECT_EQ(order->path.goal.ground_key, next.ground_key);
+}
+
+TEST(RouteFollower, ANewRouteDoesNotCutAnObservationShort) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  f.set_route({facade});
+  ASSERT_TRUE(f.step(0.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  const TaskView elsewhere = view_at(d.map, {1.5, 1.5, 0}, false);
+  f.set_route({elsewhere});  // a replanning round at 5 s
+  EXPECT_TRUE(f.observing());
+  EXPECT_FALSE(f.step(5.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  const auto leave = f.step(10.1, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(leave);
+  EXPECT_EQ(leave->path.goal.ground_key, elsewhere.ground_key);
+}
+
+TEST(RouteFollower, CoverageIsJudgedASettleTimeAfterTheObservation) {
+  Drive d;
+  d.options.observation_time_s = 1.0;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  f.set_route({facade});
+  f.step(0.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  f.step(1.1, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);  // observed, settling
+  EXPECT_EQ(d.ledger.attempts(kWall), 0);
+  f.step(3.2, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  EXPECT_EQ(d.ledger.attempts(kWall), 1);  // still incomplete: an attempt
+
+  // Covered by the time it is judged: no attempt.
+  Drive e;
+  e.options.observation_time_s = 1.0;
+  RouteFollower g(e.options, 0);
+  g.set_route({facade});
+  g.step(0.0, facade.position, DriveState::kIdle, e.map, e.keep_off, e.ledger);
+  g.step(1.1, facade.position, DriveState::kIdle, e.map, e.keep_off, e.ledger);
+  set_covered(e.map, kWall);
+  g.step(3.2, facade.position, DriveState::kIdle, e.map, e.keep_off, e.ledger);
+  EXPECT_EQ(e.ledger.attempts(kWall), 0);
+}
+
+TEST(RouteFollower, BlockedOnTheWaySkipsTheViewBacksOffAndCountsAnAttempt) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView far = view_at(d.map, {10.5, 1.5, 0}, true);
+  const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
+  f.set_route({far, next});
+  // Drive a little east, leaving a trail, then get blocked.
+  double t = 0.0;
+  for (double x = 1.5; x <= 4.0; x += 0.25, t += 0.5)
+    f.step(t, {x, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  std::optional<MotionOrder> order;
+  for (int i = 0; i < 20 && !order; ++i, t += 0.2)
+    order = f.step(t, {4.0, 1.5, 0}, DriveState::kBlocked, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(order);
+  EXPECT_EQ(order->path.goal.ground_key, next.ground_key);
+  // The path first backs off along the trail, at least a metre.
+  EXPECT_GE((order->path.waypoints.front() - Eigen::Vector3d(4.0, 1.5, 0)).head<2>().norm(), 1.0 - 1e-9);
+  EXPECT_LT(order->path.waypoints.front().x(), 4.0);
+  EXPECT_EQ(f.counters().views_skipped, 1);
+  EXPECT_EQ(d.ledger.attempts(kWall), 1);
+}
+
+TEST(GiveUpLedger, GivesUpAfterTwoDistinctSpotsOrThreeTries) {
+  GiveUpLedger l;
+  EXPECT_FALSE(l.observed(1, {0, 0, 0}, 30));
+  EXPECT_FALSE(l.observed(1, {0.5, 0, 0}, 30));  // the same spot, again
+  EXPECT_FALSE(l.given_up(1, 30));
+  EXPECT_TRUE(l.observed(1, {3, 0, 0}, 30));  // a second, distinct spot
+  EXPECT_TRUE(l.given_up(1, 30));
+
+  EXPECT_FALSE(l.failed(2, 10));
+  EXPECT_FALSE(l.observed(2, {0, 0, 0}, 10));
+  EXPECT_TRUE(l.failed(2, 10));  // three tries of any kind
+}
+
+TEST(GiveUpLedger, AGrownTargetComesBack) {
+  GiveUpLedger l;
+  l.merge(5, 40);  // a teammate gave it up at 40 voxels
+  EXPECT_TRUE(l.given_up(5, 40));
+  EXPECT_TRUE(l.given_up(5, 50));
+  EXPECT_FALSE(l.given_up(5, 51));  // grown by more than a quarter: worth a look again
+  l.merge(5, 30);                    // a smaller count does not lower the bar
+  EXPECT_FALSE(l.given_up(5, 51));
+  EXPECT_TRUE(l.given_up(5, 49));
+}
+
+}  // namespace
+}  // namespace hexplore::planning
