@@ -241,6 +241,7 @@ class Search {
   // Scores the move that rebuilds route a (and b, when b >= 0 and b != a) from segments;
   // applies it when it lowers the augmented objective. True when applied.
   bool attempt(int a, std::initializer_list<Seg> sa, int b, std::initializer_list<Seg> sb) {
+    if (o_.max_evaluations > 0 && evaluations_ >= o_.max_evaluations) return false;
     ++evaluations_;
     double ca, pa, cb = 0.0, pb = 0.0;
     compose(cls(a), sa.begin(), int(sa.size()), ca, pa);
