@@ -143,7 +143,8 @@ void PlanningService::setup(service::ServiceContext& context) {
     // Only a candidate reference for our next round: replanning on every teammate solution
     // makes robots replan each other in a loop and never finish a route (paper: replan on
     // route time-out or when a robot finishes its route).
-    shared_[source] = planning::reference_from_proto(r.message, source);
+    // A solution without sequences (its planner shares no route) is no reference.
+    if (r.message.sequences_size() > 0) shared_[source] = planning::reference_from_proto(r.message, source);
     for (uint64_t key : r.message.given_up_supervoxels()) ignored_.insert(key);
   });
   sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
@@ -412,7 +413,7 @@ void PlanningService::replan(const std::string& reason) {
     return;
   }
   // Our own solution is a reference candidate next round, like the teammates'.
-  shared_[robot_id_] = res.as_reference(robot_id_);
+  if (active_->shares_route()) shared_[robot_id_] = res.as_reference(robot_id_);
   route_ = res.robots[size_t(req.self)].route;
   next_view_ = 0;
   progress_ns_ = -1;  // a new route: progress is measured from here
@@ -446,6 +447,9 @@ void PlanningService::replan(const std::string& reason) {
 
   auto& pub = context_->publisher();
   v1::TeamSolution solution = planning::to_proto(res);
+  // Planners that share no route (MROMT+, TSPGA+) send the solution without its sequences:
+  // the given-up set below still travels, so every robot agrees on what is left.
+  if (!active_->shares_route()) solution.clear_sequences();
   std::vector<uint64_t> given_up(ignored_.begin(), ignored_.end());
   std::sort(given_up.begin(), given_up.end());
   for (uint64_t key : given_up) solution.add_given_up_supervoxels(key);
