@@ -10,6 +10,7 @@
 #include "common/planning/rng.h"
 #include "common/planning/round_inputs.h"
 #include "common/planning/view_costs.h"
+#include "common/planning/vrp_instance.h"
 #include "common/planning/vrp_search.h"
 
 namespace hexplore::planning {
