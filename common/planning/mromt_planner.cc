@@ -159,6 +159,7 @@ PlanResult MromtPlanner::plan(const PlanRequest& req) {
     }
   }
   const Assignment match = hungarian(cost);
+  out.fitness = match.cost;  // the matching's total travel time, s
   out.times.assignment_s = clock.lap();
 
   // Each robot's cluster as an open TSP on its species' graph distance.
