@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <stdexcept>
 #include <tuple>
 #include <unordered_map>
 
@@ -45,27 +44,16 @@ VrpRoutes project(const VrpInstance& inst, const ReferenceSolution& shared, cons
 
 }  // namespace
 
-void MdvrpPlanner::configure(const PlannerContext& context) {
-  if (context.team.species.empty()) throw std::invalid_argument(name() + ": team has no species");
-  context_ = context;
-  configured_ = true;
-}
-
 PlanResult MdvrpPlanner::plan(const PlanRequest& req) {
-  if (!configured_) throw std::logic_error(name() + ": plan() before configure()");
-  check_request(name(), req, context_.team);
-  const TeamCapabilities& team = context_.team;
-  const PlannerOptions& o = context_.options;
+  const PlannerContext& context = checked(req);
+  const TeamCapabilities& team = context.team;
+  const PlannerOptions& o = context.options;
   StageClock clock(o);
-  PlanResult out;
-  out.round = req.round;
-  out.planner = name();
 
   const highlevel::TopologyGraph& graph = req.map->graph();
   const RoundInputs in = prepare_round(req, team, o);
   const std::vector<TaskView>& views = in.views;
-  out.view_stats = in.stats;
-  out.views = int(views.size());
+  PlanResult out = start_result(req, in);
   out.clusters = int(views.size());  // every view is its own node
   out.times.views_s = clock.lap();
 

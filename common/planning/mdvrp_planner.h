@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <string>
 
-#include "common/planning/planner.h"
+#include "common/planning/planner_base.h"
 
 namespace hexplore::planning {
 
@@ -21,15 +21,10 @@ namespace hexplore::planning {
 // common/planning/README.md "Baselines".
 inline constexpr int64_t kMdvrpEvaluationsPerGeneration = 1000;
 
-class MdvrpPlanner : public Planner {
+class MdvrpPlanner : public ConfiguredPlanner {
  public:
   std::string name() const override { return "mdvrp+"; }
-  void configure(const PlannerContext& context) override;
   PlanResult plan(const PlanRequest& request) override;
-
- private:
-  PlannerContext context_;
-  bool configured_ = false;
 };
 
 }  // namespace hexplore::planning

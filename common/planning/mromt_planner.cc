@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <queue>
-#include <stdexcept>
 #include <tuple>
 #include <unordered_map>
 
@@ -59,27 +58,16 @@ std::vector<CandidateView> greedy_cover(const std::vector<CandidateView>& candid
 
 }  // namespace
 
-void MromtPlanner::configure(const PlannerContext& context) {
-  if (context.team.species.empty()) throw std::invalid_argument(name() + ": team has no species");
-  context_ = context;
-  configured_ = true;
-}
-
 PlanResult MromtPlanner::plan(const PlanRequest& req) {
-  if (!configured_) throw std::logic_error(name() + ": plan() before configure()");
-  check_request(name(), req, context_.team);
-  const TeamCapabilities& team = context_.team;
-  const PlannerOptions& o = context_.options;
+  const PlannerContext& context = checked(req);
+  const TeamCapabilities& team = context.team;
+  const PlannerOptions& o = context.options;
   StageClock clock(o);
-  PlanResult out;
-  out.round = req.round;
-  out.planner = name();
 
   const highlevel::TopologyGraph& graph = req.map->graph();
   const RoundInputs in = prepare_round(req, team, o);
   const std::vector<TaskView>& views = in.views;
-  out.view_stats = in.stats;
-  out.views = int(views.size());
+  PlanResult out = start_result(req, in);
 
   // Candidate views and the priority queue: the views that cover every coverable target.
   const std::vector<CandidateView> candidates = candidate_views(*in.context, views, team, o, o.eta_r_m, in.reachable);

@@ -10,23 +10,18 @@
 
 #include <string>
 
-#include "common/planning/planner.h"
+#include "common/planning/planner_base.h"
 
 namespace hexplore::planning {
 
 // CoScan's batch: views accepted per robot per round.
 inline constexpr int kMromtViewsPerRobot = 8;
 
-class MromtPlanner : public Planner {
+class MromtPlanner : public ConfiguredPlanner {
  public:
   std::string name() const override { return "mromt+"; }
-  void configure(const PlannerContext& context) override;
   PlanResult plan(const PlanRequest& request) override;
   bool shares_route() const override { return false; }
-
- private:
-  PlannerContext context_;
-  bool configured_ = false;
 };
 
 }  // namespace hexplore::planning

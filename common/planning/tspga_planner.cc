@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <unordered_set>
 
 #include "common/planning/clustering.h"
@@ -13,27 +12,16 @@
 
 namespace hexplore::planning {
 
-void TspgaPlanner::configure(const PlannerContext& context) {
-  if (context.team.species.empty()) throw std::invalid_argument(name() + ": team has no species");
-  context_ = context;
-  configured_ = true;
-}
-
 PlanResult TspgaPlanner::plan(const PlanRequest& req) {
-  if (!configured_) throw std::logic_error(name() + ": plan() before configure()");
-  check_request(name(), req, context_.team);
-  const TeamCapabilities& team = context_.team;
-  const PlannerOptions& o = context_.options;
+  const PlannerContext& context = checked(req);
+  const TeamCapabilities& team = context.team;
+  const PlannerOptions& o = context.options;
   StageClock clock(o);
-  PlanResult out;
-  out.round = req.round;
-  out.planner = name();
 
   const highlevel::TopologyGraph& graph = req.map->graph();
   const RoundInputs in = prepare_round(req, team, o);
   const std::vector<TaskView>& views = in.views;
-  out.view_stats = in.stats;
-  out.views = int(views.size());
+  PlanResult out = start_result(req, in);
   out.times.views_s = clock.lap();
 
   const std::vector<TaskCluster> clusters = cluster_views(views, o.eta_r_m);

@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "common/planning/planner.h"
+#include "common/planning/planner_base.h"
 
 namespace hexplore::planning {
 
@@ -18,16 +18,11 @@ namespace hexplore::planning {
 // SLUGCAT's 0.4 m/s). Chosen once, not tuned (common/planning/README.md "Baselines").
 inline constexpr double kTspgaHalfLifeS = 120.0;
 
-class TspgaPlanner : public Planner {
+class TspgaPlanner : public ConfiguredPlanner {
  public:
   std::string name() const override { return "tspga+"; }
-  void configure(const PlannerContext& context) override;
   PlanResult plan(const PlanRequest& request) override;
   bool shares_route() const override { return false; }
-
- private:
-  PlannerContext context_;
-  bool configured_ = false;
 };
 
 }  // namespace hexplore::planning
