@@ -12,6 +12,7 @@ PACKAGES=(
   libembree-dev libassimp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   curl python3
+  python3-matplotlib  # figures of the planner comparison (tools/report/compare_report.py)
 )
 # Tools the rig and observability tests use (docker-compose validates without an engine).
 PACKAGES+=(prometheus docker-compose)

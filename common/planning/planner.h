@@ -25,6 +25,10 @@ class Planner {
   virtual void deactivate() {}
   // One planning round; deterministic for the same request, map and options.
   virtual PlanResult plan(const PlanRequest& request) = 0;
+  // Whether the team solution travels to the teammates as the exploration route (team/plan
+  // sequences). Planners that coordinate only through identical inputs (MROMT+, TSPGA+)
+  // share nothing of it; the service then publishes the solution without sequences.
+  virtual bool shares_route() const { return true; }
 };
 
 }  // namespace hexplore::planning

@@ -3,6 +3,9 @@
 #include <stdexcept>
 
 #include "common/planning/hexplore_planner.h"
+#include "common/planning/mdvrp_planner.h"
+#include "common/planning/mromt_planner.h"
+#include "common/planning/tspga_planner.h"
 
 namespace hexplore::planning {
 
@@ -38,6 +41,10 @@ PlannerRegistry PlannerRegistry::builtin() {
     const Ablation a = ablation;
     r.add(name, [a] { return std::make_unique<HexplorePlanner>(a); });
   }
+  // The paper's comparison baselines (BASELINES.md).
+  r.add("mdvrp+", [] { return std::make_unique<MdvrpPlanner>(); });
+  r.add("mromt+", [] { return std::make_unique<MromtPlanner>(); });
+  r.add("tspga+", [] { return std::make_unique<TspgaPlanner>(); });
   return r;
 }
 

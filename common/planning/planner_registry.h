@@ -1,7 +1,7 @@
 #pragma once
-// Planners by name. builtin() holds the full method ("hexplore") and the paper's ablations
-// ("no-hetero", "no-cluster", "no-mnss", "no-assign"); an unknown name is an error that
-// lists the known ones.
+// Planners by name. builtin() holds the full method ("hexplore"), the paper's ablations
+// ("no-hetero", "no-cluster", "no-mnss", "no-assign") and its comparison baselines ("mdvrp+",
+// "mromt+", "tspga+"); an unknown name is an error that lists the known ones.
 
 #include <functional>
 #include <map>

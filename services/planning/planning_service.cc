@@ -167,7 +167,8 @@ void PlanningService::setup(service::ServiceContext& context) {
     // Only a candidate reference for our next round: replanning on every teammate solution
     // makes robots replan each other in a loop and never finish a route (paper: replan on
     // route time-out or when a robot finishes its route).
-    shared_[source] = planning::reference_from_proto(r.message, source);
+    // A solution without sequences (its planner shares no route) is no reference.
+    if (r.message.sequences_size() > 0) shared_[source] = planning::reference_from_proto(r.message, source);
     const auto& keys = r.message.given_up_supervoxels();
     const auto& counts = r.message.given_up_voxel_counts();
     for (int i = 0; i < keys.size(); ++i) ledger_.merge(keys[i], i < counts.size() ? int(counts[i]) : 0);
@@ -352,7 +353,7 @@ void PlanningService::replan(const std::string& reason) {
     return;
   }
   // Our own solution is a reference candidate next round, like the teammates'.
-  shared_[robot_id_] = res.as_reference(robot_id_);
+  if (active_->shares_route()) shared_[robot_id_] = res.as_reference(robot_id_);
   const std::vector<planning::TaskView>& route = res.robots[size_t(req.self)].route;
 
   stage_views_->observe(res.times.views_s);
@@ -387,6 +388,9 @@ void PlanningService::replan(const std::string& reason) {
 
   auto& pub = context_->publisher();
   v1::TeamSolution solution = planning::to_proto(res);
+  // Planners that share no route (MROMT+, TSPGA+) send the solution without its sequences:
+  // the given-up set below still travels, so every robot agrees on what is left.
+  if (!active_->shares_route()) solution.clear_sequences();
   std::vector<std::pair<uint64_t, int>> given_up(ledger_.given_up_targets().begin(), ledger_.given_up_targets().end());
   std::sort(given_up.begin(), given_up.end());
   for (const auto& [key, voxels] : given_up) {

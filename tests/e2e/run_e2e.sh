@@ -7,7 +7,10 @@
 # --send), kill (every service of mr1000a killed mid-run; slugcat1 must finish the work),
 # lockstep (the one-process fast mode through the launcher, then the same seed again through
 # hexplore_experiment with two CPU hogs beside it: the trajectories, completeness and
-# communication records must be byte-identical, and the experiment writes its summary).
+# communication records must be byte-identical, and the experiment writes its summary),
+# baselines (the comparison command: hexplore_experiment --planners with the paper's three
+# comparison planners, two at a time as child processes; each mission must run out of task
+# views without collision, and the comparison report must be written).
 set -euo pipefail
 case=$1 launch=$2 station=$3 work=$4 port=$5 experiment=${6:-}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -47,6 +50,32 @@ fail() {
   tail -n 30 "$work/launch.log" >&2 || true
   exit 1
 }
+
+# Stated completeness, exhausted task views and no collision in one summary.json.
+check_summary() {
+  local summary=$1 what=$2
+  [ -f "$summary" ] || fail "$what: no $summary"
+  local end obs
+  end=$(sed -n 's/.*"end_reason": *"\([^"]*\)".*/\1/p' "$summary" | head -n 1)
+  obs=$(sed -n 's/.*"final_observable_completeness": *\([^,}]*\).*/\1/p' "$summary" | head -n 1)
+  echo "$what: end: $end, observable completeness: $obs (required >= $min_observable)"
+  [ "$end" = "no task views remain" ] || fail "$what: mission ended by '$end', not by exhausted task views"
+  awk -v c="$obs" -v m="$min_observable" 'BEGIN { exit !(c >= m) }' || fail "$what: observable completeness $obs < $min_observable"
+  if grep -o '"collisions": *[0-9]*' "$summary" | grep -qv '"collisions": *0$'; then fail "$what: a robot collided"; fi
+}
+
+if [ "$case" = baselines ]; then
+  [ -n "$experiment" ] || fail "no hexplore_experiment given"
+  "$experiment" --config "$work/team.yaml" --seeds 1 --planners mdvrp+,mromt+,tspga+ --jobs 2 \
+    --results "$work/compare" > "$work/compare.log" 2>&1 || { tail -n 30 "$work/compare.log"; fail "the comparison failed"; }
+  for planner in mdvrp+ mromt+ tspga+; do check_summary "$work/compare/$planner/seed-1/summary.json" "$planner"; done
+  [ -s "$work/compare/comparison.md" ] || fail "no comparison report"
+  rows=$(tail -n +2 "$work/compare/comparison.csv" | cut -d, -f1 | tr '\n' ' ')
+  [ "$rows" = "mdvrp+ mromt+ tspga+ " ] || fail "comparison.csv rows are '$rows'"
+  cat "$work/compare/comparison.md"
+  echo "E2E PASS ($case)"
+  exit 0
+fi
 
 mode=()
 [ "$case" = lockstep ] && mode=(--compose)

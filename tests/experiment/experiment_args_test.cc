@@ -43,6 +43,40 @@ TEST(ExperimentArgs, OptionsAndPassThrough) {
   EXPECT_EQ(a.service_arguments.at("snapshot-period-s"), "5");
 }
 
+TEST(ExperimentArgs, TheComparison) {
+  const auto a = parse({"--config", "t.yaml", "--seeds", "1,2", "--planners", "hexplore,mdvrp+,,tspga+", "--jobs", "3",
+                        "--report", "false", "--report-script", "r.py"});
+  EXPECT_EQ(a.planners, (std::vector<std::string>{"hexplore", "mdvrp+", "tspga+"}));
+  EXPECT_FALSE(a.planner.has_value());
+  EXPECT_EQ(a.jobs, 3);
+  EXPECT_FALSE(a.report);
+  EXPECT_EQ(a.report_script, "r.py");
+  const auto d = parse({"--config", "t.yaml", "--seeds", "1", "--planners", "no-mnss"});
+  EXPECT_EQ(d.jobs, 1);
+  EXPECT_TRUE(d.report);
+  EXPECT_FALSE(d.report_script.has_value());
+  EXPECT_EQ(parse_planner_list("a,b"), (std::vector<std::string>{"a", "b"}));
+}
+
+TEST(ExperimentArgs, BadComparisonsAreNamed) {
+  auto message = [](std::vector<std::string> args) {
+    try {
+      parse(std::move(args));
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message({"--config", "t", "--seeds", "1", "--planners", "a,b,a"}).find("listed twice"), std::string::npos);
+  EXPECT_NE(message({"--config", "t", "--seeds", "1", "--planners", ","}).find("--planners"), std::string::npos);
+  EXPECT_NE(message({"--config", "t", "--seeds", "1", "--planners", "a", "--planner", "b"}).find("exclude"),
+            std::string::npos);
+  for (const char* jobs : {"0", "x", "2.5", "65", "-1"})
+    EXPECT_NE(message({"--config", "t", "--seeds", "1", "--planners", "a", "--jobs", jobs}).find("--jobs"), std::string::npos)
+        << jobs;
+  EXPECT_NE(message({"--config", "t", "--seeds", "1", "--report", "yes"}).find("--report"), std::string::npos);
+}
+
 TEST(ExperimentArgs, MissingPiecesAreErrors) {
   EXPECT_THROW(parse({"--seeds", "1"}), std::invalid_argument);
   EXPECT_THROW(parse({"--config", "t.yaml"}), std::invalid_argument);

@@ -122,6 +122,29 @@ TEST(Observation, GroundNearTheSensorIsCoveredAtGrazingAnglesFarGroundIsNot) {
   EXPECT_GT(far_checked, 50);
 }
 
+// rho(v) is the density of the voxel's point cloud: points from grazing looks count too, so
+// one frontal look completes what grazing ones filled; counting qualifying points only, the
+// frontal look must bring the whole density itself.
+TEST(Observation, DensityCountsEveryPointOfTheVoxelUnlessConfiguredOtherwise) {
+  for (const bool all : {true, false}) {
+    MapParams p = two_species_params();
+    EXPECT_TRUE(p.density_from_all_points);  // the team default
+    p.density_from_all_points = all;
+    PerceptionMap map(p);
+    map.integrate(scan_of(wall(0.01), {-6, 1, 1}), {});   // dense, grazing
+    map.integrate(scan_of(wall(0.05), {1.5, 3, 1}), {});  // sparse, frontal
+    int complete = 0, interior_voxels = 0;
+    for (const VoxelView& v : map.voxels()) {
+      if (!interior(v)) continue;
+      ++interior_voxels;
+      complete += v.covered() ? 1 : 0;
+    }
+    ASSERT_GT(interior_voxels, 100);
+    if (all) EXPECT_GT(complete, interior_voxels * 9 / 10) << "every point counts";
+    else EXPECT_EQ(complete, 0) << "qualifying points only";
+  }
+}
+
 // The coverage gap names the first unmet term of Q(v), so a user can tell "look from
 // elsewhere" (angle, distance) from "look longer" (density).
 TEST(Observation, CoverageGapNamesTheUnmetTerm) {
@@ -159,7 +182,9 @@ TEST(Observation, CoverageGapNamesTheUnmetTerm) {
 }
 
 TEST(Observation, AGapChangeIsPublished) {
-  PerceptionMap map(two_species_params());
+  MapParams qualifying = two_species_params();
+  qualifying.density_from_all_points = false;
+  PerceptionMap map(qualifying);
   map.integrate(scan_of(wall(0.01), {-6, 1, 1}), {});  // grazing: angle
   map.take_changes();
   map.integrate(scan_of(wall(0.05), {1.5, 3, 1}), {});  // frontal, sparse: density (still ISE)

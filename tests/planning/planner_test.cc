@@ -245,12 +245,15 @@ TEST(Planner, SameInputSameRoutesOnEveryRobot) {
 TEST(Planner, AblationsPlanAndRegistryNamesThem) {
   Fixture f;
   const PlannerRegistry reg = PlannerRegistry::builtin();
-  EXPECT_EQ(reg.names(), (std::vector<std::string>{"hexplore", "no-assign", "no-cluster", "no-hetero", "no-mnss"}));
+  EXPECT_EQ(reg.names(), (std::vector<std::string>{"hexplore", "mdvrp+", "mromt+", "no-assign", "no-cluster", "no-hetero",
+                                                    "no-mnss", "tspga+"}));
   try {
     reg.create("greedy");
     FAIL() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "unknown planner 'greedy'; known planners: hexplore, no-assign, no-cluster, no-hetero, no-mnss");
+    EXPECT_STREQ(e.what(),
+                 "unknown planner 'greedy'; known planners: hexplore, mdvrp+, mromt+, no-assign, no-cluster, no-hetero, "
+                 "no-mnss, tspga+");
   }
   for (const auto& name : reg.names()) {
     auto p = f.planner(name);

@@ -152,6 +152,28 @@ TEST_F(PlanningServiceTest, SwitchesPlannerAtRunTime) {
   EXPECT_EQ(service_->active_planner(), "no-mnss");
 }
 
+// MROMT+ and TSPGA+ share no route: their team solution goes out without sequences (the
+// given-up set still travels in it); MDVRP+ shares every robot's view sequence.
+TEST_F(PlanningServiceTest, BaselinesShareTheirRouteOrNot) {
+  ASSERT_TRUE(until([] {}, [&] { return plan_.has_value(); }));
+  for (const std::string name : {"tspga+", "mdvrp+", "mromt+"}) {
+    v1::MissionCommand cmd;
+    cmd.mutable_switch_planner()->set_planner(name);
+    route_.reset();
+    ASSERT_TRUE(until([&] { station_->publish(topics::kTeamMission, cmd); },
+                      [&] { return plan_ && plan_->planner() == name && route_; }))
+        << name;
+    EXPECT_EQ(service_->active_planner(), name);
+    if (name == "mdvrp+") {
+      ASSERT_EQ(plan_->sequences_size(), 2);
+      EXPECT_GT(plan_->sequences(0).cluster_ids_size() + plan_->sequences(1).cluster_ids_size(), 0);
+    } else {
+      EXPECT_EQ(plan_->sequences_size(), 0) << name;
+    }
+    EXPECT_GT(route_->views_size(), 0) << name;
+  }
+}
+
 TEST_F(PlanningServiceTest, ATeammateFinishingItsRouteTriggersARound) {
   ASSERT_TRUE(until([] {}, [&] { return plan_.has_value(); }));
   const uint64_t first = plan_->round();

@@ -42,6 +42,21 @@ std::vector<uint64_t> parse_seed_list(const std::string& text) {
   return seeds;
 }
 
+std::vector<std::string> parse_planner_list(const std::string& text) {
+  std::vector<std::string> names;
+  for (size_t start = 0; start <= text.size();) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    start = comma + 1;
+    if (item.empty()) continue;
+    if (std::find(names.begin(), names.end(), item) != names.end())
+      throw std::invalid_argument("--planners: '" + item + "' is listed twice");
+    names.push_back(item);
+  }
+  if (names.empty()) throw std::invalid_argument("--planners: no planner given");
+  return names;
+}
+
 ExperimentArgs parse_experiment_args(int argc, char** argv) {
   ExperimentArgs a;
   for (int i = 1; i < argc; ++i) {
@@ -53,12 +68,29 @@ ExperimentArgs parse_experiment_args(int argc, char** argv) {
     else if (flag == "--seeds") a.seeds = parse_seed_list(value);
     else if (flag == "--results") a.results_dir = value;
     else if (flag == "--planner") a.planner = value;
+    else if (flag == "--planners") a.planners = parse_planner_list(value);
+    else if (flag == "--jobs") {
+      size_t used = 0;
+      int jobs = 0;
+      try {
+        jobs = std::stoi(value, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != value.size() || jobs < 1 || jobs > 64)
+        throw std::invalid_argument("--jobs expects a whole number from 1 to 64, got '" + value + "'");
+      a.jobs = jobs;
+    } else if (flag == "--report") {
+      if (value != "true" && value != "false") throw std::invalid_argument("--report expects true or false, got '" + value + "'");
+      a.report = value == "true";
+    } else if (flag == "--report-script") a.report_script = value;
     else if (flag == "--robot") a.robots.push_back(value);
     else if (flag == "--log-level") a.log_level = value;
     else a.service_arguments[flag.substr(2)] = value;
   }
   if (a.config.empty()) throw std::invalid_argument("missing --config TEAM.yaml");
   if (a.seeds.empty()) throw std::invalid_argument("missing --seeds LIST (e.g. 1,2,3 or 1-5)");
+  if (a.planner && !a.planners.empty()) throw std::invalid_argument("--planner and --planners exclude each other");
   return a;
 }
 

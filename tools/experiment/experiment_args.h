@@ -14,6 +14,12 @@ struct ExperimentArgs {
   std::vector<uint64_t> seeds;         // --seeds 1,2,5-8
   std::string results_dir = "results/experiment";
   std::optional<std::string> planner;  // overrides params.planner
+  // --planners a,b,c: the comparison, each planner's seeds in results_dir/<planner>/, then the
+  // report (results_dir/comparison.*); excludes --planner.
+  std::vector<std::string> planners;
+  int jobs = 1;                        // --jobs N: up to N planners' runs at once, as child processes
+  bool report = true;                  // --report false: no comparison report
+  std::optional<std::string> report_script;  // --report-script PATH (default: the source tree's)
   std::vector<std::string> robots;     // empty: every robot of the team file
   std::string log_level = "warn";
   std::map<std::string, std::string> service_arguments;  // any other --name value
@@ -23,5 +29,7 @@ struct ExperimentArgs {
 ExperimentArgs parse_experiment_args(int argc, char** argv);
 // "1,2,5-8" -> {1, 2, 5, 6, 7, 8}; throws std::invalid_argument.
 std::vector<uint64_t> parse_seed_list(const std::string& text);
+// "a,b,c" -> {"a", "b", "c"}: non-empty, no name twice; throws std::invalid_argument.
+std::vector<std::string> parse_planner_list(const std::string& text);
 
 }  // namespace hexplore::experiment

@@ -4,19 +4,29 @@
 //                       [--robot ID ...] [--log-level L] [--<service option> <value> ...]
 // Each seed writes DIR/seed-<n>/ (the station's results folder); DIR/summary.json holds the
 // summary. The seed draws LiDAR noise, the GA's random choices and, for the built-in procedural
-// scenes, the scene's details. Exit: 0 all runs finished, 1 a run failed or was interrupted,
-// 2 bad arguments or team file.
+// scenes, the scene's details.
+// The comparison: --planners a,b,c runs every planner's seeds into DIR/<planner>/ (as above;
+// --jobs N runs up to N planners at once, each as a child process logging to
+// DIR/<planner>/experiment.log), then tools/report/compare_report.py writes DIR/comparison.*
+// and DIR/figures/ (--report false skips it; --report-script PATH names another script).
+// Exit: 0 all runs finished, 1 a run failed or was interrupted, 2 bad arguments or team file.
 #include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <map>
 #include <optional>
 
 #include "common/core/config_error.h"
 #include "common/core/log.h"
+#include "common/planning/planner_registry.h"
 #include "common/service/service.h"
 #include "common/station/results_writer.h"
 #include "services/station/station_service.h"
@@ -65,39 +75,18 @@ Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const 
   return Outcome::kFinished;
 }
 
-int run(int argc, char** argv) {
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
-
-  ExperimentArgs args;
-  core::TeamConfig base;
-  try {
-    args = parse_experiment_args(argc, argv);
-    core::LogLevel level;
-    if (!core::parse_log_level(args.log_level, level))
-      throw std::invalid_argument("--log-level must be debug, info, warn or error, got '" + args.log_level + "'");
-    core::set_log_level(level);
-    base = core::load_team_config(args.config);
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << "\n"
-              << "usage: hexplore_experiment --config TEAM.yaml --seeds 1,2,3|1-5 [--results DIR] [--planner NAME] "
-                 "[--robot ID ...] [--log-level L] [--<service option> <value> ...]\n";
-    return 2;
-  } catch (const core::ConfigError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
-  }
-
+// Every seed of one planner (`planner` overrides params.planner when set) into `dir`:
+// dir/seed-<n>/ and dir/summary.json. Returns the exit code (0, 1, or 2 for a team the
+// services refuse).
+int run_seeds(const core::TeamConfig& base, const ExperimentArgs& args, const std::string& results_dir,
+              const std::optional<std::string>& planner, const sigset_t& stop_signals) {
   std::vector<station::ExperimentRecord> records;
   int exit_code = 0;
   for (size_t i = 0; i < args.seeds.size(); ++i) {
     core::TeamConfig team = base;
     team.params.seed = args.seeds[i];
-    if (args.planner) team.params.planner = *args.planner;
-    const std::string dir = (std::filesystem::path(args.results_dir) / ("seed-" + std::to_string(team.params.seed))).string();
+    if (planner) team.params.planner = *planner;
+    const std::string dir = (std::filesystem::path(results_dir) / ("seed-" + std::to_string(team.params.seed))).string();
     std::printf("[experiment] run %zu/%zu: seed %llu -> %s\n", i + 1, args.seeds.size(),
                 static_cast<unsigned long long>(team.params.seed), dir.c_str());
     std::fflush(stdout);
@@ -134,11 +123,171 @@ int run(int argc, char** argv) {
     return 1;
   }
   const std::string summary = station::multi_run_summary_json(records);
-  const auto path = std::filesystem::path(args.results_dir) / "summary.json";
-  std::filesystem::create_directories(args.results_dir);
+  const auto path = std::filesystem::path(results_dir) / "summary.json";
+  std::filesystem::create_directories(results_dir);
   std::ofstream(path) << summary;
   std::printf("[experiment] %zu runs; summary in %s\n%s", records.size(), path.c_str(), summary.c_str());
   return exit_code;
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ",") + s;
+  return out;
+}
+
+// One planner's seeds as a child process (this executable with --planner), output to its log.
+pid_t spawn_planner(const ExperimentArgs& args, const std::string& planner, const std::string& dir) {
+  std::vector<std::string> argv = {"/proc/self/exe", "--config", args.config, "--planner", planner, "--results", dir,
+                                   "--log-level", args.log_level};
+  std::string seeds;
+  for (uint64_t s : args.seeds) seeds += (seeds.empty() ? "" : ",") + std::to_string(s);
+  argv.insert(argv.end(), {"--seeds", seeds});
+  for (const auto& r : args.robots) argv.insert(argv.end(), {"--robot", r});
+  for (const auto& [k, v] : args.service_arguments) argv.insert(argv.end(), {"--" + k, v});
+  std::filesystem::create_directories(dir);
+  const std::string log = (std::filesystem::path(dir) / "experiment.log").string();
+  const pid_t pid = fork();
+  if (pid != 0) return pid;  // parent (or -1)
+  FILE* out = std::freopen(log.c_str(), "w", stdout);
+  if (out) dup2(fileno(stdout), fileno(stderr));
+  std::vector<char*> raw;
+  for (auto& a : argv) raw.push_back(a.data());
+  raw.push_back(nullptr);
+  execv("/proc/self/exe", raw.data());
+  std::perror("hexplore_experiment: exec");
+  _exit(127);
+}
+
+// Runs the report script on the comparison folder; says why when it cannot.
+void run_report(const ExperimentArgs& args) {
+#ifdef HEXPLORE_COMPARE_REPORT
+  std::string script = args.report_script.value_or(HEXPLORE_COMPARE_REPORT);
+#else
+  std::string script = args.report_script.value_or("tools/report/compare_report.py");
+#endif
+  if (!std::filesystem::exists(script)) {
+    std::printf("[experiment] no comparison report: %s not found (--report-script PATH)\n", script.c_str());
+    return;
+  }
+  // Debian's interpreter is the one python3-matplotlib installs into (a python3 earlier on the
+  // PATH, e.g. pyenv's, may lack it); HEXPLORE_PYTHON overrides.
+  std::string python = "python3";
+  if (const char* env = std::getenv("HEXPLORE_PYTHON"); env && *env) python = env;
+  else if (std::filesystem::exists("/usr/bin/python3")) python = "/usr/bin/python3";
+  std::vector<std::string> argv = {python, script, args.results_dir};
+  std::vector<char*> raw;
+  for (auto& a : argv) raw.push_back(a.data());
+  raw.push_back(nullptr);
+  std::printf("[experiment] report: %s %s %s\n", python.c_str(), script.c_str(), args.results_dir.c_str());
+  std::fflush(stdout);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, raw.data(), environ) != 0) {
+    std::printf("[experiment] no comparison report: python3 is not installed (apt-get install python3 "
+                "python3-matplotlib, then run the line above)\n");
+    return;
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    std::printf("[experiment] the comparison report failed (exit %d); the runs themselves are in %s\n",
+                WIFEXITED(status) ? WEXITSTATUS(status) : -1, args.results_dir.c_str());
+}
+
+// --planners: each planner's seeds into results_dir/<planner>/, then the report.
+int run_comparison(const core::TeamConfig& base, const ExperimentArgs& args, const sigset_t& stop_signals) {
+  namespace fs = std::filesystem;
+  fs::create_directories(args.results_dir);
+  std::ofstream(fs::path(args.results_dir) / "planners.txt") << join(args.planners) << "\n";
+  int exit_code = 0;
+  if (args.jobs <= 1) {
+    for (const auto& planner : args.planners) {
+      std::printf("[experiment] planner %s\n", planner.c_str());
+      const int code = run_seeds(base, args, (fs::path(args.results_dir) / planner).string(), planner, stop_signals);
+      if (code == 2) return 2;
+      exit_code = std::max(exit_code, code);
+    }
+  } else {
+    std::map<pid_t, std::string> running;
+    size_t next = 0;
+    bool interrupted = false;
+    const timespec tick{0, 200'000'000};
+    while (next < args.planners.size() || !running.empty()) {
+      while (!interrupted && next < args.planners.size() && int(running.size()) < args.jobs) {
+        const std::string& planner = args.planners[next++];
+        const std::string dir = (fs::path(args.results_dir) / planner).string();
+        const pid_t pid = spawn_planner(args, planner, dir);
+        if (pid < 0) {
+          std::printf("[experiment] could not start the runs of %s\n", planner.c_str());
+          exit_code = 1;
+          continue;
+        }
+        running[pid] = planner;
+        std::printf("[experiment] planner %s: %zu seeds in a child process (log: %s/experiment.log)\n",
+                    planner.c_str(), args.seeds.size(), dir.c_str());
+        std::fflush(stdout);
+      }
+      const int signal = sigtimedwait(&stop_signals, nullptr, &tick);
+      if ((signal == SIGINT || signal == SIGTERM) && !interrupted) {
+        interrupted = true;
+        exit_code = 1;
+        for (const auto& [pid, _] : running) kill(pid, SIGTERM);
+      }
+      int status = 0;
+      for (pid_t pid; (pid = waitpid(-1, &status, WNOHANG)) > 0;) {
+        const auto it = running.find(pid);
+        if (it == running.end()) continue;
+        const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+        std::printf("[experiment] planner %s finished (exit %d)\n", it->second.c_str(), code);
+        std::fflush(stdout);
+        if (code == 2) exit_code = 2;
+        else exit_code = std::max(exit_code, code);
+        running.erase(it);
+      }
+      if (interrupted && next < args.planners.size()) next = args.planners.size();
+    }
+    if (interrupted) {
+      std::printf("[experiment] interrupted\n");
+      return 1;
+    }
+  }
+  if (args.report) run_report(args);
+  return exit_code;
+}
+
+int run(int argc, char** argv) {
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  ExperimentArgs args;
+  core::TeamConfig base;
+  try {
+    args = parse_experiment_args(argc, argv);
+    core::LogLevel level;
+    if (!core::parse_log_level(args.log_level, level))
+      throw std::invalid_argument("--log-level must be debug, info, warn or error, got '" + args.log_level + "'");
+    core::set_log_level(level);
+    const planning::PlannerRegistry registry = planning::PlannerRegistry::builtin();
+    std::vector<std::string> wanted = args.planners;
+    if (args.planner) wanted.push_back(*args.planner);
+    for (const auto& name : wanted)
+      if (!registry.contains(name)) registry.create(name);  // throws, listing the known planners
+    base = core::load_team_config(args.config);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << "\n"
+              << "usage: hexplore_experiment --config TEAM.yaml --seeds 1,2,3|1-5 [--results DIR] "
+                 "[--planner NAME | --planners A,B,C [--jobs N] [--report true|false] [--report-script PATH]] "
+                 "[--robot ID ...] [--log-level L] [--<service option> <value> ...]\n";
+    return 2;
+  } catch (const core::ConfigError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+  if (!args.planners.empty()) return run_comparison(base, args, stop_signals);
+  return run_seeds(base, args, args.results_dir, args.planner, stop_signals);
 }
 
 }  // namespace
