@@ -30,10 +30,17 @@ struct TeamCapabilities {
   std::vector<SpeciesCapability> species;   // index = team species index
   std::vector<std::string> robot_ids;       // index = team robot index
   std::vector<int> robot_species;
+  // Whose terrain a species' paths, distances and reachable ground use on the topology graph
+  // (index = species): itself, except in the NoHetero ablation. Empty = itself.
+  std::vector<int> graph_species;
 
+  int graph_species_of(int k) const { return size_t(k) < graph_species.size() ? graph_species[size_t(k)] : k; }
   double max_observation_range() const;
-  // Every species reduced to the weakest traversal level and shortest observation range of
-  // the team (paper ablation NoHetero); speeds are kept.
+  // The paper's NoHetero ablation: every robot as capable as the weakest species, in every
+  // mechanism the paper makes heterogeneous: traversal (graph levels, reachability, paths
+  // and distances all use the species with the lowest traversal level), observation (the
+  // shortest range, level 1, so all views are public). Speeds and observation speeds are the
+  // robots' own: they are how fast a body moves and scans, not capabilities.
   TeamCapabilities homogeneous() const;
 };
 

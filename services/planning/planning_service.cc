@@ -399,6 +399,7 @@ void PlanningService::replan(const std::string& reason) {
   }
   pub.publish(std::string(topics::kTeamPlan), solution);
   pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route));
+  follower_->set_path_species(res.path_species >= 0 ? res.path_species : species_index_);
   follower_->set_route(route);
   follow_route();  // the path to the first view at once
 }
@@ -427,6 +428,7 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
       << ", \"targets\": " << mine.route[i].targets.size() << "}";
   j << "], \"follower\": {\"reached\": " << f.views_reached << ", \"observed\": " << f.views_observed
     << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
+    << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
     << ", \"observing_s\": " << f.observing_s << "}}\n";
   trace_ << j.str();
   trace_.flush();

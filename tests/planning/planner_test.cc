@@ -274,5 +274,32 @@ TEST(Planner, AblationsPlanAndRegistryNamesThem) {
   EXPECT_LT(flat.views, full.views);
 }
 
+// NoHetero treats every robot as the weakest species in every mechanism: no robot gets views
+// on or across the rubble strip (x 24-25 m, traversal requirement 2) that only the tracked
+// species could cross (slug2 starts east of it, the others west), and paths use the wheeled
+// species' terrain.
+TEST(Planners, NoHeteroUsesTheWeakestSpeciesTerrainForEveryone) {
+  const Fixture f;
+  const int mr1000 = *f.team.species_index("MR1000");
+  for (int self = 0; self < 2; ++self) {
+    const PlanResult flat = f.planner("no-hetero")->plan(f.request(self));
+    EXPECT_EQ(flat.path_species, mr1000);
+    for (size_t r = 0; r < flat.robots.size(); ++r) {
+      const bool east = f.request(self).robots[r].position.x() > 25.0;
+      for (const auto& v : flat.robots[r].route) {
+        EXPECT_EQ(v.position.x() > 25.0, east) << flat.robots[r].robot_id << ": a view across the rubble";
+        EXPECT_LE(v.traversal_requirement, 1);
+      }
+    }
+  }
+  // The full planner sends the tracked robot across.
+  const PlanRequest req = f.request(0);
+  const PlanResult full = f.planner("hexplore")->plan(req);
+  EXPECT_EQ(full.path_species, req.robots[0].species);
+  bool beyond = false;
+  for (const auto& v : full.robots[0].route) beyond |= v.position.x() >= 24.0;
+  EXPECT_TRUE(beyond) << "the full planner never uses the tracked robot's terrain";
+}
+
 }  // namespace
 }  // namespace hexplore::planning

@@ -180,6 +180,43 @@ TEST(RouteFollower, BlockedOnTheWaySkipsTheViewBacksOffAndCountsAnAttempt) {
   EXPECT_EQ(d.ledger.attempts(kWall), 1);
 }
 
+TEST(RouteFollower, ADwellEndsAsSoonAsItsTargetsAreComplete) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
+  f.set_route({facade, next});
+  ASSERT_TRUE(f.step(0.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  EXPECT_FALSE(f.step(3.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  set_covered(d.map, kWall);
+  const auto leave = f.step(3.2, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(leave);
+  EXPECT_EQ(leave->path.goal.ground_key, next.ground_key);
+  EXPECT_EQ(f.counters().dwells_cut_short, 1);
+}
+
+TEST(RouteFollower, ViewsWhoseTargetsAreDoneArePassedBy) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
+  set_covered(d.map, kWall);  // a teammate completed it
+  f.set_route({facade, next});
+  const auto order = f.step(0.0, {10.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(order);
+  EXPECT_EQ(order->path.goal.ground_key, next.ground_key);
+  EXPECT_EQ(f.counters().views_done_before, 1);
+  // Given up counts as done too.
+  Drive e;
+  e.ledger.merge(kWall, 40);
+  RouteFollower g(e.options, 0);
+  g.set_route({facade, next});
+  const auto other = g.step(0.0, facade.position, DriveState::kIdle, e.map, e.keep_off, e.ledger);
+  ASSERT_TRUE(other);
+  EXPECT_FALSE(other->observing);
+  EXPECT_EQ(other->path.goal.ground_key, next.ground_key);
+}
+
 TEST(GiveUpLedger, GivesUpAfterTwoDistinctSpotsOrThreeTries) {
   GiveUpLedger l;
   EXPECT_FALSE(l.observed(1, {0, 0, 0}, 30));
