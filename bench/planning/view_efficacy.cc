@@ -121,6 +121,7 @@ struct Robot {
 
 struct Outcome {
   int tested = 0, completed = 0;
+  int front_completed = 0;  // the voxels on the view's side of the target's plane all complete
   double before = 0.0, after = 0.0;  // summed covered fractions
   int over90 = 0;                    // >= 90 % of its voxels complete afterwards
   std::map<core::CoverageGap, int> gap_after;
@@ -218,7 +219,10 @@ int main(int argc, char** argv) {
       for (int f = 0; f < frames; ++f) trial.scan_from(caster, ground, v.look_at);
       // The target's voxels (as the survey segmented them) after the view.
       const auto& voxels = members[k][v.key];
-      int covered = 0, hit = 0;
+      int covered = 0, hit = 0, front = 0, front_covered = 0;
+      const highlevel::Supervoxel* target = fused.find(v.key);
+      const Eigen::Vector3d sensor = ground + Eigen::Vector3d(0, 0, o.sensor_height_m);
+      const double side = (sensor - target->center).dot(target->normal);
       double short_density = 0.0;
       std::map<core::CoverageGap, int> gaps;
       for (const perception::VoxelKey& key : voxels) {
@@ -228,6 +232,11 @@ int main(int argc, char** argv) {
         if (before && view->point_count > before->point_count) ++hit;
         if (view->covered()) ++covered;
         else ++gaps[view->coverage_gap];
+        const double offset = (view->mean.cast<double>() - target->center).dot(target->normal);
+        if (offset * side >= -0.03 * std::abs(side) / std::max(1e-6, std::abs(side)) || std::abs(offset) < 0.03) {
+          ++front;
+          front_covered += view->covered() ? 1 : 0;
+        }
         if (view->coverage_gap == core::CoverageGap::kDensity) short_density += view->observation_density;
       }
       if (args.verbose) {
@@ -248,6 +257,7 @@ int main(int argc, char** argv) {
       const double frac = double(covered) / std::max<size_t>(1, voxels.size());
       out.after += frac;
       out.completed += covered == int(voxels.size()) ? 1 : 0;
+      out.front_completed += front > 0 && front_covered == front ? 1 : 0;
       out.over90 += frac >= 0.9 ? 1 : 0;
       if (covered < int(voxels.size())) {
         auto common = std::max_element(gaps.begin(), gaps.end(), [](auto& a, auto& b) { return a.second < b.second; });
@@ -258,8 +268,9 @@ int main(int argc, char** argv) {
   std::printf("facade views observed for the species' dwell at %.1f Hz:\n", args.scan_hz);
   for (const auto& [name, out] : outcomes) {
     if (out.tested == 0) continue;
-    std::printf("  %-8s %3d views: complete %5.1f%%, >= 90%% voxels %5.1f%%, covered voxels %4.1f%% -> %4.1f%%; still open by gap:",
-                name.c_str(), out.tested, 100.0 * out.completed / out.tested, 100.0 * out.over90 / out.tested,
+    std::printf("  %-8s %3d views: complete %5.1f%% (front face %5.1f%%), >= 90%% voxels %5.1f%%, covered voxels %4.1f%% -> %4.1f%%; still open by gap:",
+                name.c_str(), out.tested, 100.0 * out.completed / out.tested, 100.0 * out.front_completed / out.tested,
+                100.0 * out.over90 / out.tested,
                 100.0 * out.before / out.tested, 100.0 * out.after / out.tested);
     for (const auto& [gap, n] : out.gap_after) std::printf(" %s %d", std::string(core::to_string(gap)).c_str(), n);
     std::printf("\n");

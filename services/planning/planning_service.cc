@@ -420,7 +420,11 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
     << ", \"clusters\": " << res.clusters << ", \"open_views\": " << res.open_views
     << ", \"given_up\": " << ledger_.given_up_targets().size() << ", \"reference\": \"" << res.reference_source
     << "\", \"agreement\": " << res.agreement.value_or(-1.0) << ", \"time_s\": " << res.times.total_s
-    << ", \"own_clusters\": [";
+    << ", \"public_views\": " << res.view_stats.public_views << ", \"clusters_per_robot\": [";
+  for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cluster_ids.size();
+  j << "], \"cost_s_per_robot\": [";
+  for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cost_s;
+  j << "], \"own_clusters\": [";
   for (size_t i = 0; i < mine.cluster_centers.size(); ++i) j << (i ? ", " : "") << vec(mine.cluster_centers[i]);
   j << "], \"route\": [";
   for (size_t i = 0; i < mine.route.size(); ++i)
