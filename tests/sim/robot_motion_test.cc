@@ -254,5 +254,26 @@ TEST(RobotMotion, SingleBuildingDebrisYardNeedsTheTrackedRobot) {
   EXPECT_GT(wheeled.ground_position().y(), 20.5);
 }
 
+
+// The multi-storey scene's ramps (16 and 18 deg) and stairs (0.176 m risers) between its
+// floors: the tracked robot drives up every one of them to the floor above, the wheeled robot
+// up none (slope limit 12 deg, step limit 0.08 m).
+TEST(RobotMotion, MultiStoreyClimbsTakeTheTrackedRobotUpstairsOnly) {
+  const auto scene = generate_scene("multi-storey", 1);
+  const RayCaster caster(scene.mesh);
+  for (const auto& climb : detail::multi_storey_climbs()) {
+    const Eigen::Vector3d start = climb.path.front(), towards = climb.path[1];
+    const double yaw = std::atan2(towards.y() - start.y(), towards.x() - start.x());
+    const std::vector<Eigen::Vector3d> rest(climb.path.begin() + 1, climb.path.end());
+    RobotMotion tracked(caster, core::builtin_slugcat(), start, yaw);
+    EXPECT_EQ(drive(tracked, rest, 120), MotionState::kIdle)
+        << climb.name << ": " << to_string(tracked.block_reason()) << " at " << tracked.ground_position().transpose();
+    EXPECT_NEAR(tracked.ground_position().z(), climb.top_z, 1e-3) << climb.name;
+    RobotMotion wheeled(caster, core::builtin_mr1000(), start, yaw);
+    EXPECT_EQ(drive(wheeled, rest, 120), MotionState::kBlocked) << climb.name;
+    EXPECT_LT(wheeled.ground_position().z(), start.z() + 0.3) << climb.name;  // its front edge may be on the foot
+  }
+}
+
 }  // namespace
 }  // namespace hexplore::sim
