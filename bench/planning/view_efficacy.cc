@@ -219,7 +219,8 @@ int main(int argc, char** argv) {
       for (int f = 0; f < frames; ++f) trial.scan_from(caster, ground, v.look_at);
       // The target's voxels (as the survey segmented them) after the view.
       const auto& voxels = members[k][v.key];
-      int covered = 0, hit = 0, front = 0, front_covered = 0;
+      int covered = 0, hit = 0, front = 0, front_covered = 0, angle_n = 0;
+      double angle_off = 0.0, angle_seen = 0.0;  // angle-short voxels: normal vs target normal, vs the view
       const highlevel::Supervoxel* target = fused.find(v.key);
       const Eigen::Vector3d sensor = ground + Eigen::Vector3d(0, 0, o.sensor_height_m);
       const double side = (sensor - target->center).dot(target->normal);
@@ -238,6 +239,14 @@ int main(int argc, char** argv) {
           front_covered += view->covered() ? 1 : 0;
         }
         if (view->coverage_gap == core::CoverageGap::kDensity) short_density += view->observation_density;
+        if (args.verbose && view->coverage_gap == core::CoverageGap::kAngle && view->normal.norm() > 0.5) {
+          const double off = std::acos(std::clamp(std::abs(view->normal.cast<double>().dot(target->normal)), 0.0, 1.0));
+          const Eigen::Vector3d dir = (sensor - view->mean.cast<double>()).normalized();
+          const double seen = std::acos(std::clamp(std::abs(view->normal.cast<double>().dot(dir)), 0.0, 1.0));
+          angle_off += off * 57.3;
+          angle_seen += seen * 57.3;
+          ++angle_n;
+        }
       }
       if (args.verbose) {
         const highlevel::Supervoxel* t = fused.find(v.key);
@@ -249,6 +258,9 @@ int main(int argc, char** argv) {
         for (const auto& [g, n] : gaps) std::printf(", %s %d", std::string(core::to_string(g)).c_str(), n);
         if (gaps.count(core::CoverageGap::kDensity))
           std::printf(" (mean density %.3f)", short_density / gaps.at(core::CoverageGap::kDensity));
+        if (angle_n > 0)
+          std::printf(" (angle-short voxels: normal %.0f deg off the target's, seen at %.0f deg)", angle_off / angle_n,
+                      angle_seen / angle_n);
         std::printf("\n");
       }
       Outcome& out = outcomes[r.species.name];

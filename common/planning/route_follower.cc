@@ -29,8 +29,22 @@ constexpr double kBackoffM = 1.0;     // back off to a trail point at least this
 RouteFollower::RouteFollower(FollowerOptions options, int path_species) : options_(options), species_(path_species) {}
 
 void RouteFollower::set_route(std::vector<TaskView> route) {
+  // The leg being driven is finished first: a new round may reorder what comes after it, but
+  // turning round every round (the map grows, clusters and their order change) reaches
+  // nothing. It stays first, in the new route's copy when it has one at the same spot.
+  std::optional<TaskView> leg;
+  if (driving_ && next_ < route_.size()) leg = route_[next_];
   route_ = std::move(route);
   next_ = 0;
+  if (leg) {
+    const auto same = std::find_if(route_.begin(), route_.end(), [&](const TaskView& v) {
+      return horizontal(v.position, leg->position) <= options_.reach_m;
+    });
+    if (same != route_.end()) std::rotate(route_.begin(), same, same + 1);
+    else route_.insert(route_.begin(), *leg);
+    ++counters_.legs_kept;
+    return;  // still driving the same path: progress and blocked timers go on
+  }
   driving_ = false;
   progress_s_ = -1.0;
   // An observation in progress is finished first (the cost model paid for it); views of the

@@ -52,6 +52,7 @@ struct FollowerCounters {
   int views_without_path = 0;   // no path from here
   int views_done_before = 0;    // every target complete or given up before the robot got there
   int dwells_cut_short = 0;     // every target complete before the dwell was over
+  int legs_kept = 0;            // new routes that kept the leg being driven first
   double observing_s = 0.0;     // time spent standing and observing
 };
 
@@ -60,8 +61,8 @@ class RouteFollower {
   // `path_species`: the species index whose graph levels the paths use.
   RouteFollower(FollowerOptions options, int path_species);
 
-  // A new route (a planning round). An observation in progress is finished first; the new
-  // route's views at the same spot join it.
+  // A new route (a planning round). The leg being driven and an observation in progress are
+  // finished first; the new route's views at the same spot join them.
   void set_route(std::vector<TaskView> route);
   void set_path_species(int species) { species_ = species; }
 

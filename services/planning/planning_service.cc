@@ -413,6 +413,11 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
   };
   const planning::RobotPlan& mine = res.robots[size_t(req.self)];
   const planning::FollowerCounters& f = follower_->counters();
+  int complete[2] = {0, 0}, incomplete[2] = {0, 0};  // [ground, facade] supervoxels in the region
+  for (const auto& [key, sv] : map_->supervoxels()) {
+    if (!options_.region.contains(sv.center)) continue;
+    (sv.covered ? complete : incomplete)[sv.facade() ? 1 : 0]++;
+  }
   std::ostringstream j;
   j << "{\"t\": " << core::ns_to_s(now_ns()) << ", \"round\": " << round_ << ", \"reason\": \"" << reason
     << "\", \"planner\": \"" << active_name_ << "\", \"position\": " << vec(positions_.at(robot_id_))
@@ -420,7 +425,9 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
     << ", \"clusters\": " << res.clusters << ", \"open_views\": " << res.open_views
     << ", \"given_up\": " << ledger_.given_up_targets().size() << ", \"reference\": \"" << res.reference_source
     << "\", \"agreement\": " << res.agreement.value_or(-1.0) << ", \"time_s\": " << res.times.total_s
-    << ", \"public_views\": " << res.view_stats.public_views << ", \"clusters_per_robot\": [";
+    << ", \"public_views\": " << res.view_stats.public_views << ", \"supervoxels\": {\"ground_complete\": " << complete[0]
+    << ", \"ground_incomplete\": " << incomplete[0] << ", \"facade_complete\": " << complete[1]
+    << ", \"facade_incomplete\": " << incomplete[1] << "}, \"clusters_per_robot\": [";
   for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cluster_ids.size();
   j << "], \"cost_s_per_robot\": [";
   for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cost_s;
@@ -433,6 +440,7 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
   j << "], \"follower\": {\"reached\": " << f.views_reached << ", \"observed\": " << f.views_observed
     << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
     << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
+    << ", \"legs_kept\": " << f.legs_kept
     << ", \"observing_s\": " << f.observing_s << "}}\n";
   trace_ << j.str();
   trace_.flush();

@@ -217,6 +217,29 @@ TEST(RouteFollower, ViewsWhoseTargetsAreDoneArePassedBy) {
   EXPECT_EQ(other->path.goal.ground_key, next.ground_key);
 }
 
+TEST(RouteFollower, ANewRouteKeepsTheLegBeingDriven) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView east = view_at(d.map, {10.5, 1.5, 0}, false);
+  const TaskView north = view_at(d.map, {1.5, 6.5, 0}, false);
+  f.set_route({east, north});
+  ASSERT_TRUE(f.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  f.step(5.0, {3.5, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  // A new round puts north first: east is still finished first, and no new path is sent.
+  f.set_route({north, east});
+  ASSERT_EQ(f.route().front().ground_key, east.ground_key);
+  EXPECT_EQ(f.route().size(), 2u);
+  EXPECT_FALSE(f.step(5.2, {3.6, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger));
+  // A round without it: it is kept in front of the new route.
+  f.set_route({north});
+  ASSERT_EQ(f.route().size(), 2u);
+  EXPECT_EQ(f.route().front().ground_key, east.ground_key);
+  EXPECT_EQ(f.counters().legs_kept, 2);
+  const auto next = f.step(30.0, east.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(next);
+  EXPECT_EQ(next->path.goal.ground_key, north.ground_key);
+}
+
 TEST(GiveUpLedger, GivesUpAfterTwoDistinctSpotsOrThreeTries) {
   GiveUpLedger l;
   EXPECT_FALSE(l.observed(1, {0, 0, 0}, 30));
