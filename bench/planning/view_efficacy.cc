@@ -12,6 +12,7 @@
 //                            [--survey-spacing-m 4] [--seed 1] [--lidar-pattern livox|fixed]
 //                            [--density all|qualifying] [--rho-th X] [--verbose true]
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -167,8 +168,33 @@ int main(int argc, char** argv) {
       ++frames;
     }
     r.segment();
-    std::printf("survey %-8s %4zu frames, %7zu voxels, %6zu supervoxels\n", r.species.name.c_str(), frames,
-                r.map->voxel_count(), r.segmenter->supervoxels().size());
+    std::map<core::CoverageGap, int> facade_gaps;
+    std::map<std::string, std::array<int, 2>> by_kind;  // kind -> {voxels, angle-short}
+    int facade_voxels = 0;
+    for (const perception::VoxelView& v : r.map->voxels()) {
+      if (v.ground() || !scene.site.contains(v.mean.cast<double>())) continue;
+      ++facade_voxels;
+      ++facade_gaps[v.coverage_gap];
+      if (args.verbose) {
+        const double nz = v.normal.z();
+        const std::string kind = v.normal.norm() < 0.5 ? "no-normal"
+                                 : nz < -0.7           ? "ceiling"
+                                 : nz > 0.7            ? "up-facing"
+                                 : std::abs(nz) < 0.3  ? (v.mean.z() < 1.0 ? "wall<1m" : v.mean.z() < 3.5 ? "wall<3.5m" : "wall>3.5m")
+                                                       : "sloped";
+        auto& k = by_kind[kind];
+        ++k[0];
+        k[1] += v.coverage_gap == core::CoverageGap::kAngle ? 1 : 0;
+      }
+    }
+    for (const auto& [kind, k] : by_kind)
+      std::printf("    %-10s %6d voxels (%4.1f%%), %4.1f%% of them angle-short\n", kind.c_str(), k[0],
+                  100.0 * k[0] / std::max(1, facade_voxels), 100.0 * k[1] / std::max(1, k[0]));
+    std::printf("survey %-8s %4zu frames, %7zu voxels, %6zu supervoxels; facade voxels %d:", r.species.name.c_str(),
+                frames, r.map->voxel_count(), r.segmenter->supervoxels().size(), facade_voxels);
+    for (const auto& [g, n] : facade_gaps)
+      std::printf(" %s %.1f%%", std::string(core::to_string(g)).c_str(), 100.0 * n / std::max(1, facade_voxels));
+    std::printf("\n");
     robots.push_back(std::move(r));
   }
 

@@ -60,7 +60,7 @@ struct PlannerOptions {
   double ground_cover_radius_m = 1.5;  // a view covers ground-ISE supervoxels this close
   // Half the extent of a facade target (a supervoxel grows about 0.75 eta_s from its seed):
   // a view must see its edges, not only its centre, within gamma_th. 0 = a point target.
-  double target_half_extent_m = 0.0;
+  double target_half_extent_m = 0.25;
   int ga_population = 64;
   int ga_max_generations = 400;
   double ga_time_budget_s = 0.05;

@@ -43,7 +43,9 @@ void RouteFollower::set_route(std::vector<TaskView> route) {
     if (same != route_.end()) std::rotate(route_.begin(), same, same + 1);
     else route_.insert(route_.begin(), *leg);
     ++counters_.legs_kept;
-    return;  // still driving the same path: progress and blocked timers go on
+    // The path to it is planned again (what to keep off may have changed since).
+    driving_ = false;
+    return;
   }
   driving_ = false;
   progress_s_ = -1.0;
@@ -53,6 +55,14 @@ void RouteFollower::set_route(std::vector<TaskView> route) {
     const auto& targets = route_[next_++].targets;
     observed_targets_.insert(observed_targets_.end(), targets.begin(), targets.end());
   }
+}
+
+void RouteFollower::clear() {
+  route_.clear();
+  next_ = 0;
+  driving_ = false;
+  observing_ = false;
+  progress_s_ = -1.0;
 }
 
 std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector3d& position, DriveState state,

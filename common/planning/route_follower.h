@@ -65,6 +65,8 @@ class RouteFollower {
   // finished first; the new route's views at the same spot join them.
   void set_route(std::vector<TaskView> route);
   void set_path_species(int species) { species_ = species; }
+  // Drops the route, the leg and any observation (another planner takes over).
+  void clear();
 
   // One control cycle at sim time `now_s`. Returns the order to send when it changed (a new
   // path, a new aim); nullopt when the last order stands. `keep_off`: vertices no path may

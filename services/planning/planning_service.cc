@@ -95,6 +95,20 @@ void PlanningService::setup(service::ServiceContext& context) {
   }
   species_index_ = team.species_index(species->name).value_or(0);
   follower_ = std::make_unique<planning::RouteFollower>(follow, species_index_);
+  // What the robot sees on its way counts too: the band its fixed (not gimbal-aimed) LiDARs cover.
+  double low = 90.0, high = -90.0;
+  for (const auto& l : species->lidars)
+    if (!l.gimbal) {
+      low = std::min(low, l.vertical_min_deg + l.mount_pitch_deg);
+      high = std::max(high, l.vertical_max_deg + l.mount_pitch_deg);
+    }
+  planning::PassingOptions passing = planning::passing_options(
+      capabilities_.species[size_t(species_index_)], std::max(low, options_.theta_l_deg),
+      std::min(high, options_.theta_u_deg), follow.observation_time_s);
+  passing.settle_s = follow.settle_s;
+  passing.spot_m = rules.distinct_m;
+  passing.ground_reach_m = follow.reach_m;
+  passing_ = std::make_unique<planning::PassingObserver>(passing, options_);
   peer_stuck_s_ = parse_positive(args, "peer-stuck-s", 30.0);
 
   auto& m = context.metrics();
@@ -206,7 +220,7 @@ bool PlanningService::switch_planner(const std::string& name) {
   if (!previous.empty()) {
     if (switches_) switches_->add({{"robot", robot_id_}, {"planner", name}})->increment();
     core::LogLine(core::LogLevel::kInfo, "planning") << robot_id_ << ": planner switched from " << previous << " to " << name;
-    follower_->set_route({});  // plan again with the new planner at the next cycle
+    follower_->clear();  // plan again with the new planner at the next cycle
   }
   return true;
 }
@@ -309,6 +323,11 @@ planning::DriveState PlanningService::drive_state() const {
 }
 
 void PlanningService::follow_route() {
+  const double now_s = core::ns_to_s(now_ns());
+  if (now_s - last_look_s_ >= 1.0) {
+    last_look_s_ = now_s;
+    passing_->step(now_s, positions_.at(robot_id_), *map_, ledger_);
+  }
   const auto order = follower_->step(core::ns_to_s(now_ns()), positions_.at(robot_id_), drive_state(), *map_,
                                      avoided_vertices(), ledger_);
   if (!order) return;
@@ -440,7 +459,7 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
   j << "], \"follower\": {\"reached\": " << f.views_reached << ", \"observed\": " << f.views_observed
     << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
     << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
-    << ", \"legs_kept\": " << f.legs_kept
+    << ", \"legs_kept\": " << f.legs_kept << ", \"passing_observations\": " << passing_->observations()
     << ", \"observing_s\": " << f.observing_s << "}}\n";
   trace_ << j.str();
   trace_.flush();

@@ -225,11 +225,13 @@ TEST(RouteFollower, ANewRouteKeepsTheLegBeingDriven) {
   f.set_route({east, north});
   ASSERT_TRUE(f.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
   f.step(5.0, {3.5, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
-  // A new round puts north first: east is still finished first, and no new path is sent.
+  // A new round puts north first: east is still finished first (its path planned again).
   f.set_route({north, east});
   ASSERT_EQ(f.route().front().ground_key, east.ground_key);
   EXPECT_EQ(f.route().size(), 2u);
-  EXPECT_FALSE(f.step(5.2, {3.6, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger));
+  const auto again = f.step(5.2, {3.6, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->path.goal.ground_key, east.ground_key);
   // A round without it: it is kept in front of the new route.
   f.set_route({north});
   ASSERT_EQ(f.route().size(), 2u);
