@@ -10,13 +10,17 @@
 // Usage: bench_view_efficacy [--scene single-building] [--views 60] [--scan-hz 2]
 //                            [--dwell-s S (default: the species' 1 / observation speed)]
 //                            [--survey-spacing-m 4] [--seed 1] [--lidar-pattern livox|fixed]
-//                            [--density all|qualifying] [--rho-th X] [--verbose true]
+//                            [--density all_points|qualifying_points|neighbour_occupancy] [--rho-th X]
+//                            [--ise-patch N]
+//                            [--verbose true]
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <set>
+#include <array>
 #include <unordered_map>
 #include <memory>
 #include <string>
@@ -50,9 +54,9 @@ struct Args {
   uint64_t seed = 1;
   bool fixed_pattern = false;
   bool verbose = false;        // one line per view
-  bool density_all = false;    // rho from every point of the voxel
-  bool density_set = false;
+  std::string density;         // overrides params.rho_measure
   double rho_th = -1.0;        // overrides the team default
+  int ise_patch = 0;           // overrides params.min_ise_patch_voxels when > 0
   double extent_m = -1.0;      // overrides PlannerOptions::target_half_extent_m  // rotating LiDARs with a repetitive pattern instead of Livox-style
 };
 
@@ -68,8 +72,9 @@ Args parse(int argc, char** argv) {
     else if (k == "--seed") a.seed = std::strtoull(v.c_str(), nullptr, 10);
     else if (k == "--lidar-pattern") a.fixed_pattern = v == "fixed";
     else if (k == "--verbose") a.verbose = v == "true";
-    else if (k == "--density") a.density_all = v == "all", a.density_set = true;
+    else if (k == "--density") a.density = v;
     else if (k == "--rho-th") a.rho_th = std::atof(v.c_str());
+    else if (k == "--ise-patch") a.ise_patch = std::atoi(v.c_str());
     else if (k == "--extent-m") a.extent_m = std::atof(v.c_str());
     else {
       std::fprintf(stderr, "unknown option %s\n", k.c_str());
@@ -125,8 +130,37 @@ struct Outcome {
   int front_completed = 0;  // the voxels on the view's side of the target's plane all complete
   double before = 0.0, after = 0.0;  // summed covered fractions
   int over90 = 0;                    // >= 90 % of its voxels complete afterwards
+  // No connected patch (26-neighbourhood) of >= k incomplete voxels left, k = 3, 5, 10: the
+  // target would be complete if specks of incomplete voxels counted as noise.
+  int no_patch[3] = {0, 0, 0};
   std::map<core::CoverageGap, int> gap_after;
 };
+
+// Size of the largest 26-connected set among `cells`.
+int largest_patch(const std::set<std::array<int32_t, 3>>& cells) {
+  std::set<std::array<int32_t, 3>> left = cells;
+  int best = 0;
+  while (!left.empty()) {
+    std::vector<std::array<int32_t, 3>> stack{*left.begin()};
+    left.erase(left.begin());
+    int size = 0;
+    while (!stack.empty()) {
+      const auto c = stack.back();
+      stack.pop_back();
+      ++size;
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz) {
+            auto it = left.find({c[0] + dx, c[1] + dy, c[2] + dz});
+            if (it == left.end()) continue;
+            stack.push_back(*it);
+            left.erase(it);
+          }
+    }
+    best = std::max(best, size);
+  }
+  return best;
+}
 
 }  // namespace
 
@@ -142,6 +176,8 @@ int main(int argc, char** argv) {
   for (size_t i = 0; i < team.species.size(); ++i)
     team.robots.push_back({team.species[i].name, team.species[i].name, scene.suggested_starts.at(i), 0});
   if (args.rho_th >= 0) team.params.rho_th = args.rho_th;
+  if (!args.density.empty()) team.params.rho_measure = args.density;
+  if (args.ise_patch > 0) team.params.min_ise_patch_voxels = args.ise_patch;
   const core::AlgorithmParams& params = team.params;
   const Eigen::Vector3d centre = scene.site.center();
 
@@ -149,13 +185,14 @@ int main(int argc, char** argv) {
   highlevel::SegmenterParams seg;
   seg.resolution_m = params.map_resolution_m;
   seg.eta_s_m = params.eta_s_m;
+  seg.min_ise_patch_voxels = params.min_ise_patch_voxels;
   seg.eta_e_m = params.eta_e_m;
   for (size_t k = 0; k < team.species.size(); ++k) {
     Robot r;
     r.species = team.species[k];
     for (size_t i = 0; i < r.species.lidars.size(); ++i) r.lidars.emplace_back(r.species.lidars[i], 11 + 7 * k + i);
     perception::MapParams mp = perception::make_map_params(params, team.species, r.species);
-    if (args.density_set) mp.density_from_all_points = args.density_all;
+
     r.map = std::make_unique<perception::PerceptionMap>(mp);
     r.segmenter = std::make_unique<highlevel::SupervoxelSegmenter>(seg, highlevel::species_levels(team));
     // Survey: a frame from every survey_spacing of the ground this species reaches, aimed at the site centre.
@@ -225,6 +262,7 @@ int main(int argc, char** argv) {
       members[k][robots[k].segmenter->supervoxel_of({v.key.ix, v.key.iy, v.key.iz})].push_back(v.key);
 
   std::map<std::string, Outcome> outcomes;
+  const int min_patch = team.params.min_ise_patch_voxels;
   const size_t step = std::max<size_t>(1, facade.size() / size_t(std::max(1, args.views)));
   for (size_t i = 0; i < facade.size(); i += step) {
     const planning::TaskView& v = *facade[i];
@@ -246,6 +284,7 @@ int main(int argc, char** argv) {
       // The target's voxels (as the survey segmented them) after the view.
       const auto& voxels = members[k][v.key];
       int covered = 0, hit = 0, front = 0, front_covered = 0, angle_n = 0;
+      std::set<std::array<int32_t, 3>> open_voxels;
       double angle_off = 0.0, angle_seen = 0.0;  // angle-short voxels: normal vs target normal, vs the view
       const highlevel::Supervoxel* target = fused.find(v.key);
       const Eigen::Vector3d sensor = ground + Eigen::Vector3d(0, 0, o.sensor_height_m);
@@ -258,7 +297,10 @@ int main(int argc, char** argv) {
         const auto before = r.map->find(key);
         if (before && view->point_count > before->point_count) ++hit;
         if (view->covered()) ++covered;
-        else ++gaps[view->coverage_gap];
+        else {
+          ++gaps[view->coverage_gap];
+          open_voxels.insert({key.ix, key.iy, key.iz});
+        }
         const double offset = (view->mean.cast<double>() - target->center).dot(target->normal);
         if (offset * side >= -0.03 * std::abs(side) / std::max(1e-6, std::abs(side)) || std::abs(offset) < 0.03) {
           ++front;
@@ -294,9 +336,12 @@ int main(int argc, char** argv) {
       out.before += double(mine->covered_voxels) / std::max(1, mine->voxel_count);
       const double frac = double(covered) / std::max<size_t>(1, voxels.size());
       out.after += frac;
-      out.completed += covered == int(voxels.size()) ? 1 : 0;
+      // Complete as the segmenter judges it: no patch of min_ise_patch_voxels incomplete voxels.
+      const int patch = largest_patch(open_voxels);
+      out.completed += patch < min_patch ? 1 : 0;
       out.front_completed += front > 0 && front_covered == front ? 1 : 0;
       out.over90 += frac >= 0.9 ? 1 : 0;
+      for (int j = 0; j < 3; ++j) out.no_patch[j] += patch < std::array{3, 5, 10}[j] ? 1 : 0;
       if (covered < int(voxels.size())) {
         auto common = std::max_element(gaps.begin(), gaps.end(), [](auto& a, auto& b) { return a.second < b.second; });
         if (common != gaps.end()) ++out.gap_after[common->first];
@@ -310,6 +355,8 @@ int main(int argc, char** argv) {
                 name.c_str(), out.tested, 100.0 * out.completed / out.tested, 100.0 * out.front_completed / out.tested,
                 100.0 * out.over90 / out.tested,
                 100.0 * out.before / out.tested, 100.0 * out.after / out.tested);
+    std::printf(" no open patch of >= 3/5/10 voxels %4.1f%% %4.1f%% %4.1f%%;", 100.0 * out.no_patch[0] / out.tested,
+                100.0 * out.no_patch[1] / out.tested, 100.0 * out.no_patch[2] / out.tested);
     for (const auto& [gap, n] : out.gap_after) std::printf(" %s %d", std::string(core::to_string(gap)).c_str(), n);
     std::printf("\n");
   }

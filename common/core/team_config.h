@@ -84,10 +84,15 @@ struct AlgorithmParams {
   // Perception map.
   double map_resolution_m = 0.15;
   double rho_th = 0.3;                   // observation-density threshold, points per cm^2 (see perception/map_params.h)
-  // rho(v) counts every point of the voxel (the density of its point cloud, the paper's "number
-  // of measurement points per unit area"); false: only points of observations that meet the
-  // angle and distance thresholds (common/planning/README.md has the measured difference).
-  bool rho_all_points = true;
+  // What rho(v) measures (common/planning/README.md, "The coverage model", has the measured
+  // difference): "all_points": points of the voxel per cm^2 (the density of its point cloud);
+  // "qualifying_points": only points of observations within the angle and distance thresholds;
+  // "neighbour_occupancy": 1 - sparsity, the occupied share of the voxel's 26 neighbours (the
+  // paper: density "is inversely proportional to the sparsity in terrain metrics").
+  std::string rho_measure = "all_points";
+  // Smallest connected patch of ISE voxels that keeps a supervoxel an ISE
+  // (highlevel::SegmenterParams::min_ise_patch_voxels; 1 = every voxel must be covered).
+  int min_ise_patch_voxels = 1;
   double gamma_th_deg = 45.0;            // observation-angle threshold (facade voxels)
   // Observation-angle threshold for ground voxels. Not in the paper's table: a LiDAR mounted
   // below 1 m sees the floor at grazing angles, and with 45 deg a floor voxel would need the

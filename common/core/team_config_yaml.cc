@@ -162,13 +162,20 @@ void read_transport(const Reader& r, const YAML::Node& n, TransportConfig& t) {
 
 void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   const std::string path = "params";
-  r.only_keys(n, path, {"map_resolution_m", "rho_th", "rho_all_points", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg",
+  r.only_keys(n, path, {"map_resolution_m", "rho_th", "rho_measure", "min_ise_patch_voxels", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg",
                         "beta_i", "beta_l", "beta_zeta", "beta_varsigma", "beta_e", "beta_c", "beta_m", "beta_d",
                         "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "ga_population",
                         "ga_max_generations", "ga_time_budget_s", "planner", "seed"});
   r.read(n, path, "map_resolution_m", p.map_resolution_m);
   r.read(n, path, "rho_th", p.rho_th);
-  r.read(n, path, "rho_all_points", p.rho_all_points);
+  r.read(n, path, "rho_measure", p.rho_measure);
+  if (p.rho_measure != "all_points" && p.rho_measure != "qualifying_points" && p.rho_measure != "neighbour_occupancy")
+    r.fail(n["rho_measure"], path + ".rho_measure",
+           "must be all_points, qualifying_points or neighbour_occupancy, got '" + p.rho_measure + "'");
+  r.read(n, path, "min_ise_patch_voxels", p.min_ise_patch_voxels);
+  if (p.min_ise_patch_voxels < 1)
+    r.fail(n["min_ise_patch_voxels"], path + ".min_ise_patch_voxels",
+           "must be >= 1, got " + std::to_string(p.min_ise_patch_voxels));
   r.read(n, path, "gamma_th_deg", p.gamma_th_deg);
   r.read(n, path, "gamma_th_ground_deg", p.gamma_th_ground_deg);
   r.read(n, path, "s_th_deg", p.s_th_deg);

@@ -39,6 +39,7 @@ void SegmenterParams::validate() const {
   if (!(eta_e_m >= 0.0)) fail("eta_e_m must be >= 0, got " + std::to_string(eta_e_m));
   if (max_hops < 0) fail("max_hops must be >= 0, got " + std::to_string(max_hops));
   if (max_hops * resolution_m > eta_s_m) fail("max_hops * resolution_m must not exceed eta_s_m");
+  if (min_ise_patch_voxels < 1) fail("min_ise_patch_voxels must be >= 1, got " + std::to_string(min_ise_patch_voxels));
 }
 
 void SupervoxelSegmenter::Stats::add(const VoxelSample& v, int sign, size_t species) {
@@ -353,7 +354,7 @@ Supervoxel SupervoxelSegmenter::aggregate(uint64_t group) const {
   const Eigen::Vector3d normal(static_cast<double>(total.normal_u[0]), static_cast<double>(total.normal_u[1]),
                                static_cast<double>(total.normal_u[2]));
   sv.normal = normal.norm() > 0.0 ? Eigen::Vector3d(normal.normalized()) : Eigen::Vector3d::UnitZ();
-  sv.covered = total.covered == total.count;
+  sv.covered = total.covered == total.count || !has_ise_patch(group);
   sv.covered_voxels = static_cast<int>(total.covered);
   if (!sv.covered) {
     int best = 0;  // kNone: incomplete voxels that gave no reason (from an old peer)
@@ -367,6 +368,33 @@ Supervoxel SupervoxelSegmenter::aggregate(uint64_t group) const {
   }
   sv.traversal_requirement = traversal_requirement(mask, levels_);
   return sv;
+}
+
+bool SupervoxelSegmenter::has_ise_patch(uint64_t group) const {
+  const size_t wanted = static_cast<size_t>(params_.min_ise_patch_voxels);
+  auto open_member = [&](uint64_t vkey) {
+    const VoxelRec* rec = voxels_.find(vkey);
+    return rec != nullptr && !rec->sample.covered() && rec->label != 0 && group_of_seed(rec->label) == group;
+  };
+  std::unordered_set<uint64_t> seen;
+  std::vector<uint64_t> stack;
+  for (uint64_t s : groups_.at(group)) {
+    for (uint64_t start : seeds_.at(s).region) {
+      if (!open_member(start) || !seen.insert(start).second) continue;
+      size_t patch = 0;
+      stack.assign(1, start);
+      while (!stack.empty()) {
+        const uint64_t v = stack.back();
+        stack.pop_back();
+        if (++patch >= wanted) return true;
+        for (int64_t d : kNeighbours) {
+          const uint64_t n = shifted(v, d);
+          if (open_member(n) && seen.insert(n).second) stack.push_back(n);
+        }
+      }
+    }
+  }
+  return false;
 }
 
 std::unordered_set<uint64_t> SupervoxelSegmenter::ground_neighbours(uint64_t group) const {

@@ -26,6 +26,12 @@ struct SegmenterParams {
   // Wavefront range in voxel hops; 0 = the largest range not exceeding eta_s / 2 + a quarter
   // cell (about 0.75 eta_s). Voxels out of reach of every seed join their own cell's seed.
   int max_hops = 0;
+  // A supervoxel is an ISE while it holds a connected patch (26-neighbourhood) of at least
+  // this many incomplete voxels. The paper segments the ISE voxels on their own, dropping
+  // seeds with too few neighbours as noise, so scattered incomplete voxels at the edges of a
+  // covered surface never make an ISE supervoxel; 1 is the literal "every voxel covered" rule.
+  // common/planning/README.md ("The coverage model") has the measured effect.
+  int min_ise_patch_voxels = 1;
 
   // Throws std::invalid_argument naming the bad field.
   void validate() const;
@@ -106,6 +112,8 @@ class SupervoxelSegmenter {
   size_t relabel(const std::unordered_set<uint64_t>& dirty_seeds);  // returns voxels examined
   void set_label(uint64_t vkey, VoxelRec& rec, uint64_t label);
   Supervoxel aggregate(uint64_t group) const;
+  // Whether the group holds a connected patch of at least min_ise_patch_voxels incomplete voxels.
+  bool has_ise_patch(uint64_t group) const;
   std::unordered_set<uint64_t> ground_neighbours(uint64_t group) const;
   uint64_t group_of_seed(uint64_t seed) const;
 

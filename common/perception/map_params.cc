@@ -61,7 +61,9 @@ MapParams make_map_params(const core::AlgorithmParams& params,
   MapParams p;
   p.resolution_m = params.map_resolution_m;
   p.rho_th = params.rho_th;
-  p.density_from_all_points = params.rho_all_points;
+  p.density = params.rho_measure == "qualifying_points"     ? MapParams::Density::kQualifyingPoints
+              : params.rho_measure == "neighbour_occupancy" ? MapParams::Density::kNeighbourOccupancy
+                                                            : MapParams::Density::kAllPoints;
   p.gamma_th_deg = params.gamma_th_deg;
   p.gamma_th_ground_deg = params.gamma_th_ground_deg;
   p.s_th_deg = params.s_th_deg;

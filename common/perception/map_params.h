@@ -42,9 +42,9 @@ struct MapParams {
   // ~68 points in a 0.15 m voxel: a few frames from a 16-120 line LiDAR within ~10 m, but never
   // one far grazing sweep. The unit does not depend on the resolution.
   double rho_th = 0.3;
-  // Count every point of the voxel towards rho (the density of its point cloud), not only
-  // the points of qualifying observations.
-  bool density_from_all_points = false;
+  // What rho(v) measures (core::AlgorithmParams::rho_measure).
+  enum class Density { kQualifyingPoints, kAllPoints, kNeighbourOccupancy };
+  Density density = Density::kAllPoints;
   double gamma_th_deg = 45.0;  // observation angle threshold (facade)
   double gamma_th_ground_deg = 75.0;  // observation angle threshold (ground; see core::AlgorithmParams)
   double s_th_deg = 45.0;      // ground/facade slope threshold

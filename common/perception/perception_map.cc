@@ -245,6 +245,15 @@ void PerceptionMap::update_observation(VoxelData& d, const Eigen::Vector3d& cent
   d.obs_distance_cm = std::min(d.obs_distance_cm, distance_cm);
 }
 
+double PerceptionMap::observation_density(const VoxelData& d) const {
+  switch (params_.density) {
+    case MapParams::Density::kQualifyingPoints: return d.obs_points * params_.density_per_point();
+    case MapParams::Density::kAllPoints: return d.count * params_.density_per_point();
+    case MapParams::Density::kNeighbourOccupancy: return 1.0 - d.empty_neighbours / 26.0;
+  }
+  return 0.0;
+}
+
 core::CoverageGap PerceptionMap::coverage_gap(const VoxelData& d) const {
   if (!d.has_normal()) return core::CoverageGap::kNoNormal;
   float n[3];
@@ -257,8 +266,7 @@ core::CoverageGap PerceptionMap::coverage_gap(const VoxelData& d) const {
   }
   // The threshold follows the current normal (ground or facade), which may have turned since.
   if (d.obs_angle_cdeg / 100.0 >= angle_th) return core::CoverageGap::kAngle;
-  const uint32_t points = params_.density_from_all_points ? d.count : d.obs_points;
-  if (points * params_.density_per_point() <= params_.rho_th) return core::CoverageGap::kDensity;
+  if (observation_density(d) <= params_.rho_th) return core::CoverageGap::kDensity;
   return core::CoverageGap::kNone;
 }
 
@@ -329,7 +337,7 @@ VoxelView PerceptionMap::view_of(const octomap::OcTreeKey& key, const VoxelData&
     v.observation_angle_deg = d.obs_angle_cdeg / 100.0;
     v.observation_distance_m = d.obs_distance_cm / 100.0;
   }
-  v.observation_density = d.obs_points * params_.density_per_point();
+  v.observation_density = observation_density(d);
   v.coverage_gap = coverage_gap(d);
   v.flags = d.flags & kPublishedFlagsMask;
   v.low_risk_species_mask = d.low_risk_mask;

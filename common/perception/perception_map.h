@@ -114,6 +114,7 @@ class PerceptionMap {
   void refresh_state(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLookup& lookup);
   // Why the voxel is not a CSE yet (kNone when it is): the first unmet term of eq. 2.
   core::CoverageGap coverage_gap(const VoxelData& d) const;
+  double observation_density(const VoxelData& d) const;  // rho(v) as MapParams::density says
   // gamma_th for a voxel with this normal: the ground threshold below s_th, else the facade one.
   double angle_threshold_deg(const float normal[3]) const;
   bool published_state_moved(const VoxelData& d, const Eigen::Vector3d& centre) const;

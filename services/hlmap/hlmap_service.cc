@@ -38,6 +38,7 @@ void HlmapService::setup(service::ServiceContext& context) {
   params_.resolution_m = team.params.map_resolution_m;
   params_.eta_s_m = team.params.eta_s_m;
   params_.eta_e_m = team.params.eta_e_m;
+  params_.min_ise_patch_voxels = team.params.min_ise_patch_voxels;
   try {
     params_.validate();
   } catch (const std::invalid_argument& e) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "common/core/clock.h"
@@ -66,6 +67,8 @@ void PlanningService::setup(service::ServiceContext& context) {
   const auto& args = context.arguments();
   if (auto it = args.find("trace-dir"); it != args.end()) {
     const std::string path = it->second + "/planning-" + robot_id_ + ".jsonl";
+    std::error_code ignored;  // a failure shows as the open below failing
+    std::filesystem::create_directories(it->second, ignored);
     trace_.open(path);
     if (!trace_) throw std::invalid_argument("planning: --trace-dir: cannot write " + path);
   }

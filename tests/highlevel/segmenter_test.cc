@@ -116,8 +116,10 @@ TEST(Segmenter, TraversalRequirementFollowsPaperTable) {
   EXPECT_EQ(seg.supervoxels().begin()->second.traversal_requirement, 2);
 }
 
-TEST(Segmenter, CoverageIsAllVoxelsCovered) {
-  SupervoxelSegmenter seg({}, kLevels);
+TEST(Segmenter, CoverageIsAllVoxelsCoveredWithTheLiteralRule) {
+  SegmenterParams literal;
+  literal.min_ise_patch_voxels = 1;
+  SupervoxelSegmenter seg(literal, kLevels);
   std::vector<VoxelSample> patch;
   for (int x = 0; x < 6; ++x)
     for (int y = 0; y < 6; ++y)
@@ -131,6 +133,46 @@ TEST(Segmenter, CoverageIsAllVoxelsCovered) {
   EXPECT_TRUE(seg.supervoxels().begin()->second.covered);
   EXPECT_EQ(change.upserted.size(), 1u);
   EXPECT_EQ(change.relabelled_voxels, 0u) << "attribute changes do not re-grow regions";
+}
+
+// A 6 x 6 covered patch with incomplete voxels at the given (x, y) positions.
+std::vector<VoxelSample> patch_with_open(const std::vector<std::pair<int, int>>& open) {
+  std::vector<VoxelSample> patch;
+  for (int x = 0; x < 6; ++x)
+    for (int y = 0; y < 6; ++y) {
+      const bool is_open = std::count(open.begin(), open.end(), std::pair{x, y}) > 0;
+      patch.push_back(voxel_at({x, y, 0}, 0.15, kGroundFlags | (is_open ? 0u : uint32_t(kVoxelCovered)), 0b11,
+                               Eigen::Vector3f::UnitZ()));
+    }
+  return patch;
+}
+
+TEST(Segmenter, ScatteredIncompleteVoxelsDoNotMakeAnIse) {
+  SegmenterParams params;
+  params.min_ise_patch_voxels = 4;
+  {  // four isolated specks (no two of them neighbours): noise at the default threshold
+    SupervoxelSegmenter seg(params, kLevels);
+    seg.update(patch_with_open({{0, 0}, {0, 5}, {5, 0}, {5, 5}}));
+    ASSERT_EQ(seg.supervoxels().size(), 1u);
+    const Supervoxel& s = seg.supervoxels().begin()->second;
+    EXPECT_TRUE(s.covered);
+    EXPECT_EQ(s.covered_voxels, 32) << "the count still tells how many voxels are complete";
+  }
+  {  // three in a diagonal chain (26-connected) and one apart: the patch is 3 < 4
+    SupervoxelSegmenter seg(params, kLevels);
+    seg.update(patch_with_open({{1, 1}, {2, 2}, {3, 3}, {5, 0}}));
+    EXPECT_TRUE(seg.supervoxels().begin()->second.covered);
+  }
+  {  // four connected: an ISE, and it stays one until a voxel of the patch is covered
+    SupervoxelSegmenter seg(params, kLevels);
+    auto patch = patch_with_open({{1, 1}, {2, 2}, {3, 3}, {3, 4}});
+    seg.update(patch);
+    EXPECT_FALSE(seg.supervoxels().begin()->second.covered);
+    VoxelSample fixed = patch[3 * 6 + 3];
+    fixed.flags |= kVoxelCovered;
+    seg.update(std::span(&fixed, 1));
+    EXPECT_TRUE(seg.supervoxels().begin()->second.covered);
+  }
 }
 
 TEST(Segmenter, FacadeAndGroundInOneCellGetDistinctKeys) {

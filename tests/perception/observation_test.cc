@@ -128,8 +128,8 @@ TEST(Observation, GroundNearTheSensorIsCoveredAtGrazingAnglesFarGroundIsNot) {
 TEST(Observation, DensityCountsEveryPointOfTheVoxelUnlessConfiguredOtherwise) {
   for (const bool all : {true, false}) {
     MapParams p = two_species_params();
-    EXPECT_TRUE(p.density_from_all_points);  // the team default
-    p.density_from_all_points = all;
+    EXPECT_EQ(p.density, MapParams::Density::kAllPoints);  // the team default
+    p.density = all ? MapParams::Density::kAllPoints : MapParams::Density::kQualifyingPoints;
     PerceptionMap map(p);
     map.integrate(scan_of(wall(0.01), {-6, 1, 1}), {});   // dense, grazing
     map.integrate(scan_of(wall(0.05), {1.5, 3, 1}), {});  // sparse, frontal
@@ -183,7 +183,7 @@ TEST(Observation, CoverageGapNamesTheUnmetTerm) {
 
 TEST(Observation, AGapChangeIsPublished) {
   MapParams qualifying = two_species_params();
-  qualifying.density_from_all_points = false;
+  qualifying.density = MapParams::Density::kQualifyingPoints;
   PerceptionMap map(qualifying);
   map.integrate(scan_of(wall(0.01), {-6, 1, 1}), {});  // grazing: angle
   map.take_changes();
