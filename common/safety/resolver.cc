@@ -279,14 +279,15 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
 
   // Last line of defence against inconsistent views: never close in on a moving teammate's
   // body beyond the hard distance (or beyond the current distance when already inside it).
+  // A teammate known only from an older fragment may be anywhere on its trail.
   const auto samples = sample_path(candidate, options_.sample_step_m * 0.5);
   for (const Fragment* p : peers) {
     if (p->stationary) continue;
     const double hard = radius_m_ + p->body_radius_m() + options_.hard_margin_m +
                         (speed_mps + p->speed_mps) * options_.cycle_s;
-    const double threshold = std::min(hard, distance_xy(position, p->position_m) - 1e-3);
+    const double threshold = std::min(hard, p->distance_to(position) - 1e-3);
     for (size_t i = 1; i < samples.size() && samples[i - 1].s_m < limit_s; ++i) {
-      if (distance_xy(samples[i].point, p->position_m) < threshold) {
+      if (p->distance_to(samples[i].point) < threshold) {
         if (samples[i - 1].s_m < limit_s) {
           limit_s = samples[i - 1].s_m;
           limit_reason = "too close to " + p->robot_id;
