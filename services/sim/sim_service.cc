@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
@@ -259,6 +260,13 @@ void SimService::tick() {
   if (motion_->collisions() > reported_collisions_) {
     collisions_->increment(motion_->collisions() - reported_collisions_);
     reported_collisions_ = motion_->collisions();
+    // Rare and always worth a line: where, and how close the nearest teammate's centre was.
+    const Eigen::Vector3d at = motion_->ground_position();
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const ProxyBox& m : mates) nearest = std::min(nearest, (m.center - motion_->body_pose().translation()).head<2>().norm());
+    char where[128];
+    std::snprintf(where, sizeof(where), "(%.2f, %.2f, %.2f), nearest teammate centre %.2f m", at.x(), at.y(), at.z(), nearest);
+    core::LogLine(core::LogLevel::kWarn, "sim") << robot_id_ << ": contact with a teammate at " << where;
   }
   update_gauges();
   publish_pose();

@@ -143,8 +143,9 @@ void StationService::setup(service::ServiceContext& context) {
 
 void StationService::subscribe_team(service::ServiceContext& context) {
   for (const auto& robot : context.team().robots) {
-    for (auto kind : {core::ServiceKind::kSim, core::ServiceKind::kHlmap, core::ServiceKind::kPlanning,
-                      core::ServiceKind::kSafety})
+    // Mapping for its status (what sending the whole perception map would cost).
+    for (auto kind : {core::ServiceKind::kSim, core::ServiceKind::kMapping, core::ServiceKind::kHlmap,
+                      core::ServiceKind::kPlanning, core::ServiceKind::kSafety})
       context.connect(robot.id, kind);
   }
   auto& sub = context.subscriber();
