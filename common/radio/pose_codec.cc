@@ -11,6 +11,7 @@ namespace {
 constexpr uint8_t kStateMask = 0x07;
 constexpr uint8_t kTilted = 0x08;
 constexpr uint8_t kMoving = 0x10;
+constexpr uint8_t kClimbing = 0x20;  // a vertical speed follows (ground robots mostly have none)
 
 Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 void set(v1::Vec3* out, const Eigen::Vector3d& v) {
@@ -36,11 +37,13 @@ void PoseCodec::encode(const google::protobuf::MessageLite& message, const trans
   const double roll = std::atan2(m(2, 1), m(2, 2));
   const uint8_t pitch_b = angle_byte(pitch), roll_b = angle_byte(roll);
   const Eigen::Vector3d velocity = vec(pose.velocity_mps());
-  const bool moving = to_cm(velocity.x()) != 0 || to_cm(velocity.y()) != 0 || to_cm(velocity.z()) != 0;
+  const bool climbing = to_cm(velocity.z()) != 0;
+  const bool moving = to_cm(velocity.x()) != 0 || to_cm(velocity.y()) != 0 || climbing;
   const bool tilted = pitch_b != 0 || roll_b != 0;
   uint8_t flags = static_cast<uint8_t>(std::clamp<int>(pose.state(), 0, kStateMask));
   if (tilted) flags |= kTilted;
   if (moving) flags |= kMoving;
+  if (climbing) flags |= kClimbing;
   transport::ByteWriter w(out);
   w.u8(flags);
   write_cm(w, vec(pose.pose().position_m()), Eigen::Vector3d::Zero());
@@ -49,14 +52,19 @@ void PoseCodec::encode(const google::protobuf::MessageLite& message, const trans
     w.u8(pitch_b);
     w.u8(roll_b);
   }
-  if (moving) write_cm(w, velocity, Eigen::Vector3d::Zero());
+  if (moving) {
+    w.svarint(to_cm(velocity.x()));
+    w.svarint(to_cm(velocity.y()));
+    if (climbing) w.svarint(to_cm(velocity.z()));
+  }
 }
 
 bool PoseCodec::decode(std::string_view data, const transport::Roster*, google::protobuf::MessageLite& message) const {
   auto& pose = static_cast<v1::RobotPose&>(message);
   transport::ByteReader r(data);
   const uint8_t flags = r.u8();
-  if (flags & ~(kStateMask | kTilted | kMoving)) return false;
+  if (flags & ~(kStateMask | kTilted | kMoving | kClimbing)) return false;
+  if ((flags & kClimbing) && !(flags & kMoving)) return false;
   const int state = flags & kStateMask;
   if (!v1::MotionState_IsValid(state)) return false;
   const Eigen::Vector3d position = read_cm(r, Eigen::Vector3d::Zero());
@@ -67,7 +75,11 @@ bool PoseCodec::decode(std::string_view data, const transport::Roster*, google::
     roll = angle_from_byte(r.u8());
   }
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
-  if (flags & kMoving) velocity = read_cm(r, Eigen::Vector3d::Zero());
+  if (flags & kMoving) {
+    velocity.x() = from_cm(r.svarint());
+    velocity.y() = from_cm(r.svarint());
+    if (flags & kClimbing) velocity.z() = from_cm(r.svarint());
+  }
   if (!r.done()) return false;
   const Eigen::Quaterniond q = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
                                Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *

@@ -14,8 +14,10 @@
 namespace hexplore::radio {
 
 struct PoseScheduleOptions {
-  double threshold_m = 0.25;      // extrapolation error that makes a pose due
-  double heading_deg = 20.0;      // heading change that makes a pose due
+  // Extrapolation error that makes a pose due. Receivers that must not mistake a teammate for
+  // terrain (the mapping filter) widen its body by this much while they extrapolate.
+  double threshold_m = 0.3;
+  double heading_deg = 25.0;      // heading change that makes a pose due
   double min_interval_s = 0.5;    // drift-triggered poses no closer together than this
   double heartbeat_s = 2.0;       // a pose at least this often
   double max_extrapolation_s = 3.0;  // receivers extrapolate no further (extrapolate_pose)

@@ -216,10 +216,18 @@ void MappingService::on_scan(const std::string& sender, const v1::ScanFrame& fra
   for (const auto& [id, mate] : teammates_) {
     if (core::ns_to_s(now - mate.received_ns) > options_.teammate_timeout_s) continue;
     // Team poses come when dead reckoning says so: where the teammate is by this scan's time.
+    // The sender lets the extrapolation drift by up to threshold_m before it sends again, so the
+    // body is widened (horizontally) by that much while it is extrapolated.
     perception::OrientedBox box = mate.box;
-    if (sim_time_ns > 0 && mate.sim_time_ns > 0)
-      box.centre = radio::extrapolate_pose(box.centre, mate.velocity_mps, core::ns_to_s(sim_time_ns - mate.sim_time_ns),
-                                           radio::PoseScheduleOptions{}.max_extrapolation_s);
+    if (sim_time_ns > 0 && mate.sim_time_ns > 0) {
+      const radio::PoseScheduleOptions schedule;
+      const double age_s = core::ns_to_s(sim_time_ns - mate.sim_time_ns);
+      box.centre = radio::extrapolate_pose(box.centre, mate.velocity_mps, age_s, schedule.max_extrapolation_s);
+      if (age_s > 0.0) {
+        box.half_extents_m.x() += schedule.threshold_m;
+        box.half_extents_m.y() += schedule.threshold_m;
+      }
+    }
     bodies.push_back(box);
   }
   const auto t0 = std::chrono::steady_clock::now();

@@ -57,7 +57,7 @@ TEST(PoseCodec, CarriesPositionHeadingVelocityAndStateInAFewBytes) {
   const PoseCodec codec;
   const v1::RobotPose in = moving_pose();
   const std::string wire = encode(codec, in, nullptr);
-  EXPECT_LE(wire.size(), 13u);
+  EXPECT_LE(wire.size(), 12u);  // level: no vertical speed
   EXPECT_LT(wire.size() * 8, in.ByteSizeLong());
   v1::RobotPose out;
   ASSERT_TRUE(decode(codec, wire, nullptr, out));
@@ -84,6 +84,18 @@ TEST(PoseCodec, AStandingLevelRobotSendsNoVelocityOrTilt) {
   EXPECT_EQ(vec(out.velocity_mps()), Eigen::Vector3d::Zero());
 }
 
+TEST(PoseCodec, AClimbingRobotKeepsItsVerticalSpeed) {
+  const PoseCodec codec;
+  v1::RobotPose in = moving_pose();
+  set(in.mutable_velocity_mps(), 0.18, 0.46, -0.23);
+  const std::string level = encode(codec, moving_pose(), nullptr);
+  const std::string wire = encode(codec, in, nullptr);
+  EXPECT_EQ(wire.size(), level.size() + 1);
+  v1::RobotPose out;
+  ASSERT_TRUE(decode(codec, wire, nullptr, out));
+  EXPECT_LE((vec(out.velocity_mps()) - vec(in.velocity_mps())).norm(), 0.01);
+}
+
 TEST(PoseCodec, ATiltedBodyKeepsPitchAndRoll) {
   const PoseCodec codec;
   v1::RobotPose in = moving_pose();
@@ -108,6 +120,7 @@ TEST(PoseCodec, RefusesMalformedInput) {
   v1::RobotPose out;
   EXPECT_FALSE(decode(codec, std::string("\x07\x00\x00\x00\x00", 5), nullptr, out));  // state 7 does not exist
   EXPECT_FALSE(decode(codec, std::string("\x80\x00\x00\x00\x00", 5), nullptr, out));  // unknown flag
+  EXPECT_FALSE(decode(codec, std::string("\x20\x00\x00\x00\x00\x00", 6), nullptr, out));  // climbing, not moving
 }
 
 v1::PathFragment fragment() {

@@ -29,10 +29,10 @@ TEST(PoseSchedule, DriftTurnsAndStateChangesAreSentAtOnce) {
   PoseSchedule s;
   s.sent(0.0, V::Zero(), V(0.5, 0, 0), 0.0, kMoving);
   EXPECT_FALSE(s.due(0.6, V(0.3, 0, 0), 0.0, kMoving));  // as extrapolated
-  EXPECT_TRUE(s.due(0.6, V(0.3, 0.3, 0), 0.0, kMoving));  // 0.3 m off the extrapolation
+  EXPECT_TRUE(s.due(0.6, V(0.3, 0.35, 0), 0.0, kMoving)); // 0.35 m off the extrapolation
   EXPECT_TRUE(s.due(0.6, V(0.3, 0, 0), 0.5, kMoving));    // turned by 29 degrees
   EXPECT_TRUE(s.due(0.1, V(0.05, 0, 0), 0.0, kIdle));     // went idle: at once, even within min_interval
-  EXPECT_FALSE(s.due(0.2, V(0.1, 0.3, 0), 0.0, kMoving)); // drift, but too soon after the last
+  EXPECT_FALSE(s.due(0.2, V(0.1, 0.4, 0), 0.0, kMoving)); // drift, but too soon after the last
 }
 
 TEST(PoseSchedule, ExtrapolationStopsAtItsHorizon) {
