@@ -12,6 +12,7 @@
 //                            [--survey-spacing-m 4] [--seed 1] [--lidar-pattern livox|fixed]
 //                            [--density all|qualifying] [--rho-th X] [--verbose true]
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -121,6 +122,7 @@ struct Robot {
 
 struct Outcome {
   int tested = 0, completed = 0;
+  int front_completed = 0;  // the voxels on the view's side of the target's plane all complete
   double before = 0.0, after = 0.0;  // summed covered fractions
   int over90 = 0;                    // >= 90 % of its voxels complete afterwards
   std::map<core::CoverageGap, int> gap_after;
@@ -166,8 +168,33 @@ int main(int argc, char** argv) {
       ++frames;
     }
     r.segment();
-    std::printf("survey %-8s %4zu frames, %7zu voxels, %6zu supervoxels\n", r.species.name.c_str(), frames,
-                r.map->voxel_count(), r.segmenter->supervoxels().size());
+    std::map<core::CoverageGap, int> facade_gaps;
+    std::map<std::string, std::array<int, 2>> by_kind;  // kind -> {voxels, angle-short}
+    int facade_voxels = 0;
+    for (const perception::VoxelView& v : r.map->voxels()) {
+      if (v.ground() || !scene.site.contains(v.mean.cast<double>())) continue;
+      ++facade_voxels;
+      ++facade_gaps[v.coverage_gap];
+      if (args.verbose) {
+        const double nz = v.normal.z();
+        const std::string kind = v.normal.norm() < 0.5 ? "no-normal"
+                                 : nz < -0.7           ? "ceiling"
+                                 : nz > 0.7            ? "up-facing"
+                                 : std::abs(nz) < 0.3  ? (v.mean.z() < 1.0 ? "wall<1m" : v.mean.z() < 3.5 ? "wall<3.5m" : "wall>3.5m")
+                                                       : "sloped";
+        auto& k = by_kind[kind];
+        ++k[0];
+        k[1] += v.coverage_gap == core::CoverageGap::kAngle ? 1 : 0;
+      }
+    }
+    for (const auto& [kind, k] : by_kind)
+      std::printf("    %-10s %6d voxels (%4.1f%%), %4.1f%% of them angle-short\n", kind.c_str(), k[0],
+                  100.0 * k[0] / std::max(1, facade_voxels), 100.0 * k[1] / std::max(1, k[0]));
+    std::printf("survey %-8s %4zu frames, %7zu voxels, %6zu supervoxels; facade voxels %d:", r.species.name.c_str(),
+                frames, r.map->voxel_count(), r.segmenter->supervoxels().size(), facade_voxels);
+    for (const auto& [g, n] : facade_gaps)
+      std::printf(" %s %.1f%%", std::string(core::to_string(g)).c_str(), 100.0 * n / std::max(1, facade_voxels));
+    std::printf("\n");
     robots.push_back(std::move(r));
   }
 
@@ -218,7 +245,11 @@ int main(int argc, char** argv) {
       for (int f = 0; f < frames; ++f) trial.scan_from(caster, ground, v.look_at);
       // The target's voxels (as the survey segmented them) after the view.
       const auto& voxels = members[k][v.key];
-      int covered = 0, hit = 0;
+      int covered = 0, hit = 0, front = 0, front_covered = 0, angle_n = 0;
+      double angle_off = 0.0, angle_seen = 0.0;  // angle-short voxels: normal vs target normal, vs the view
+      const highlevel::Supervoxel* target = fused.find(v.key);
+      const Eigen::Vector3d sensor = ground + Eigen::Vector3d(0, 0, o.sensor_height_m);
+      const double side = (sensor - target->center).dot(target->normal);
       double short_density = 0.0;
       std::map<core::CoverageGap, int> gaps;
       for (const perception::VoxelKey& key : voxels) {
@@ -228,7 +259,20 @@ int main(int argc, char** argv) {
         if (before && view->point_count > before->point_count) ++hit;
         if (view->covered()) ++covered;
         else ++gaps[view->coverage_gap];
+        const double offset = (view->mean.cast<double>() - target->center).dot(target->normal);
+        if (offset * side >= -0.03 * std::abs(side) / std::max(1e-6, std::abs(side)) || std::abs(offset) < 0.03) {
+          ++front;
+          front_covered += view->covered() ? 1 : 0;
+        }
         if (view->coverage_gap == core::CoverageGap::kDensity) short_density += view->observation_density;
+        if (args.verbose && view->coverage_gap == core::CoverageGap::kAngle && view->normal.norm() > 0.5) {
+          const double off = std::acos(std::clamp(std::abs(view->normal.cast<double>().dot(target->normal)), 0.0, 1.0));
+          const Eigen::Vector3d dir = (sensor - view->mean.cast<double>()).normalized();
+          const double seen = std::acos(std::clamp(std::abs(view->normal.cast<double>().dot(dir)), 0.0, 1.0));
+          angle_off += off * 57.3;
+          angle_seen += seen * 57.3;
+          ++angle_n;
+        }
       }
       if (args.verbose) {
         const highlevel::Supervoxel* t = fused.find(v.key);
@@ -240,6 +284,9 @@ int main(int argc, char** argv) {
         for (const auto& [g, n] : gaps) std::printf(", %s %d", std::string(core::to_string(g)).c_str(), n);
         if (gaps.count(core::CoverageGap::kDensity))
           std::printf(" (mean density %.3f)", short_density / gaps.at(core::CoverageGap::kDensity));
+        if (angle_n > 0)
+          std::printf(" (angle-short voxels: normal %.0f deg off the target's, seen at %.0f deg)", angle_off / angle_n,
+                      angle_seen / angle_n);
         std::printf("\n");
       }
       Outcome& out = outcomes[r.species.name];
@@ -248,6 +295,7 @@ int main(int argc, char** argv) {
       const double frac = double(covered) / std::max<size_t>(1, voxels.size());
       out.after += frac;
       out.completed += covered == int(voxels.size()) ? 1 : 0;
+      out.front_completed += front > 0 && front_covered == front ? 1 : 0;
       out.over90 += frac >= 0.9 ? 1 : 0;
       if (covered < int(voxels.size())) {
         auto common = std::max_element(gaps.begin(), gaps.end(), [](auto& a, auto& b) { return a.second < b.second; });
@@ -258,8 +306,9 @@ int main(int argc, char** argv) {
   std::printf("facade views observed for the species' dwell at %.1f Hz:\n", args.scan_hz);
   for (const auto& [name, out] : outcomes) {
     if (out.tested == 0) continue;
-    std::printf("  %-8s %3d views: complete %5.1f%%, >= 90%% voxels %5.1f%%, covered voxels %4.1f%% -> %4.1f%%; still open by gap:",
-                name.c_str(), out.tested, 100.0 * out.completed / out.tested, 100.0 * out.over90 / out.tested,
+    std::printf("  %-8s %3d views: complete %5.1f%% (front face %5.1f%%), >= 90%% voxels %5.1f%%, covered voxels %4.1f%% -> %4.1f%%; still open by gap:",
+                name.c_str(), out.tested, 100.0 * out.completed / out.tested, 100.0 * out.front_completed / out.tested,
+                100.0 * out.over90 / out.tested,
                 100.0 * out.before / out.tested, 100.0 * out.after / out.tested);
     for (const auto& [gap, n] : out.gap_after) std::printf(" %s %d", std::string(core::to_string(gap)).c_str(), n);
     std::printf("\n");

@@ -33,13 +33,21 @@ void MapParams::validate() const {
     require(s.max_roughness_m >= 0.0, f + "max_roughness_m", "must be >= 0");
     require(s.min_clearance_m >= 0.0 && s.min_clearance_m <= 5.0, f + "min_clearance_m", "must be in [0, 5] m");
     require(s.max_sparsity >= 0.0 && s.max_sparsity <= 1.0, f + "max_sparsity", "must be in [0, 1]");
+    require(s.body_length_m >= 0.0, f + "body_length_m", "must be >= 0");
   }
+}
+
+double slope_allowance_deg(const SpeciesLimits& s) {
+  if (s.body_length_m <= 0.0 || s.max_slope_deg >= 90.0) return s.max_slope_deg;
+  const double tan_allowed = std::tan(s.max_slope_deg * M_PI / 180.0) + 0.5 * s.max_step_m / s.body_length_m;
+  return std::atan(tan_allowed) * 180.0 / M_PI;
 }
 
 SpeciesLimits species_limits(const core::SpeciesConfig& s) {
   SpeciesLimits l;
   l.name = s.name;
   l.max_slope_deg = s.max_slope_deg;
+  l.body_length_m = 2.0 * s.body_half_extents_m.x();
   l.max_step_m = s.max_step_m;
   l.max_roughness_m = s.max_roughness_m;
   l.min_clearance_m = s.min_clearance_m;

@@ -19,7 +19,17 @@ struct SpeciesLimits {
   double max_roughness_m = 0.03;
   double min_clearance_m = 0.6;
   double max_sparsity = 0.9;
+  // Body length along its travel; 0: none known. With it, slopes are allowed up to the
+  // allowance below rather than max_slope_deg itself.
+  double body_length_m = 0.0;
 };
+
+// The steepest voxel slope a species is taken to cross: its max slope plus half a step over its
+// body length, the tolerance the simulated body gets too (common/sim/terrain_probe.cc). A
+// tracked body bridges stair nosings and feels a flight's mean slope, while voxel normals
+// fitted to 0.45 m of a staircase read up to ~10 deg steeper where risers dominate; without the
+// allowance a 30 deg flight is high risk for a 35 deg species in patches that cut the flight.
+double slope_allowance_deg(const SpeciesLimits& s);
 
 // Why 0.15 m: the paper's supervoxel edge eta_e = 0.2 m must span at least one voxel, a
 // voxel must resolve a 15 cm step (the wheeled species' limit case) as a height change of one

@@ -95,8 +95,17 @@ void update_geometry(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLooku
   if (eig.eigenvalues()(1) < line_limit) return;
   Eigen::Vector3d normal = eig.eigenvectors().col(0).cast<double>().normalized();
 
-  if (orient_to_sensor || !d.has_normal()) {
-    if (normal.dot(sensor - (centre + mean)) < 0.0) normal = -normal;
+  // The sensor saw this side of the surface. But the plane is fitted to a 0.45 m neighbourhood,
+  // and where the surface is not flat at that scale the sensor may see it from beyond the
+  // plane: the treads of a staircase seen from its top landing face the sensor while the
+  // flight's mean plane passes above it, and orienting towards the sensor would turn the
+  // flight down (a ceiling: facade) behind a robot that just climbed it. A ground robot sees
+  // a shallow surface from above only on its top side, so a shallow plane seen from above
+  // faces up; steeper ones, and any seen from below (ceilings), face the sensor.
+  const Eigen::Vector3d view = sensor - (centre + mean);
+  if (!d.has_normal() || orient_to_sensor) {
+    const bool shallow = std::abs(normal.z()) >= std::cos(params.s_th_deg * M_PI / 180.0);
+    if (shallow && view.z() > 0.0 ? normal.z() < 0.0 : normal.dot(view) < 0.0) normal = -normal;
   } else {
     float prev[3];
     d.normal(prev);
@@ -177,16 +186,19 @@ TerrainSample sample_terrain(const octomap::OcTreeKey& key, const VoxelData& d, 
     t.roughness_m = std::sqrt(sq / m);
   }
 
-  // Overhead obstacles: the first voxel above that is not this surface's own continuation
-  // (a ramp splits over two cells of one column with means less than half a cell apart).
-  for (int dz = 1; dz <= window.clearance_cells; ++dz) {
+  // This column's own run: cells directly above this one, without a gap, are the surface
+  // rising within the column (a riser from this tread to the next, a ramp split over two
+  // cells, a wall's foot), a step like a neighbour column's run, not something overhead.
+  int run = 0;
+  while (run < window.step_cells && cell(0, 0, run + 1) != nullptr) ++run;
+  const double surface = run == 0 ? h : mean_z(cell(0, 0, run)->data(), centre.z() + run * res);
+  t.step_m = std::max(t.step_m, surface - h);
+  // Overhead obstacles: the first voxel above the run, after a gap, measured from its top.
+  for (int dz = run + 2; dz <= window.clearance_cells; ++dz) {
     const VoxelNode* node = cell(0, 0, dz);
     if (node == nullptr) continue;
-    const double gap = mean_z(node->data(), centre.z() + dz * res) - h;
-    if (gap > 0.5 * res) {
-      t.clearance_m = gap;
-      break;
-    }
+    t.clearance_m = mean_z(node->data(), centre.z() + dz * res) - surface;
+    break;
   }
   return t;
 }
@@ -195,7 +207,7 @@ uint32_t low_risk_mask(const TerrainSample& t, const MapParams& params) {
   uint32_t mask = 0;
   for (size_t k = 0; k < params.species.size(); ++k) {
     const SpeciesLimits& s = params.species[k];
-    const bool low_risk = t.slope_deg <= s.max_slope_deg && t.sparsity <= s.max_sparsity &&
+    const bool low_risk = t.slope_deg <= slope_allowance_deg(s) && t.sparsity <= s.max_sparsity &&
                           t.step_m <= s.max_step_m && t.roughness_m <= s.max_roughness_m &&
                           t.clearance_m >= s.min_clearance_m;
     if (low_risk) mask |= uint32_t{1} << k;

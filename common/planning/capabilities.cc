@@ -16,16 +16,18 @@ TeamCapabilities TeamCapabilities::homogeneous() const {
   TeamCapabilities out = *this;
   if (species.empty()) return out;
   int level = species.front().traversal_level;
+  int weakest = 0;  // lowest traversal level; ties: lower index
   double range = species.front().observation_range_m;
-  for (const auto& s : species) {
-    level = std::min(level, s.traversal_level);
-    range = std::min(range, s.observation_range_m);
+  for (size_t k = 0; k < species.size(); ++k) {
+    if (species[k].traversal_level < level) level = species[k].traversal_level, weakest = int(k);
+    range = std::min(range, species[k].observation_range_m);
   }
   for (auto& s : out.species) {
     s.traversal_level = level;
     s.observation_level = 1;
     s.observation_range_m = range;
   }
+  out.graph_species.assign(species.size(), weakest);
   return out;
 }
 

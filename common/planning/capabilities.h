@@ -30,10 +30,17 @@ struct TeamCapabilities {
   std::vector<SpeciesCapability> species;   // index = team species index
   std::vector<std::string> robot_ids;       // index = team robot index
   std::vector<int> robot_species;
+  // Whose terrain a species' paths, distances and reachable ground use on the topology graph
+  // (index = species): itself, except in the NoHetero ablation. Empty = itself.
+  std::vector<int> graph_species;
 
+  int graph_species_of(int k) const { return size_t(k) < graph_species.size() ? graph_species[size_t(k)] : k; }
   double max_observation_range() const;
-  // Every species reduced to the weakest traversal level and shortest observation range of
-  // the team (paper ablation NoHetero); speeds are kept.
+  // The paper's NoHetero ablation: every robot as capable as the weakest species, in every
+  // mechanism the paper makes heterogeneous: traversal (graph levels, reachability, paths
+  // and distances all use the species with the lowest traversal level), observation (the
+  // shortest range, level 1, so all views are public). Speeds and observation speeds are the
+  // robots' own: they are how fast a body moves and scans, not capabilities.
   TeamCapabilities homogeneous() const;
 };
 
@@ -53,7 +60,7 @@ struct PlannerOptions {
   double ground_cover_radius_m = 1.5;  // a view covers ground-ISE supervoxels this close
   // Half the extent of a facade target (a supervoxel grows about 0.75 eta_s from its seed):
   // a view must see its edges, not only its centre, within gamma_th. 0 = a point target.
-  double target_half_extent_m = 0.0;
+  double target_half_extent_m = 0.25;
   int ga_population = 64;
   int ga_max_generations = 400;
   double ga_time_budget_s = 0.05;

@@ -20,7 +20,7 @@ AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const
   out.robot_vertex.resize(size_t(R), 0);
   std::vector<char> robot_on_graph(size_t(R), 0);
   for (int r = 0; r < R; ++r)
-    if (auto v = robot_vertex(graph, robots[size_t(r)].position, robots[size_t(r)].species)) {
+    if (auto v = robot_vertex(graph, robots[size_t(r)].position, team.graph_species_of(robots[size_t(r)].species))) {
       out.robot_vertex[size_t(r)] = *v;
       robot_on_graph[size_t(r)] = 1;
     }
@@ -33,11 +33,12 @@ AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const
     const TaskCluster& cl = clusters[c];
     for (int k = 0; k < S; ++k) {
       if (!used[size_t(k)] || (cl.label != kPublic && cl.label != k)) continue;
-      const auto a = graph.nearest(cl.center, k);
+      const int g = team.graph_species_of(k);
+      const auto a = graph.nearest(cl.center, g);
       if (!a) continue;
       out.anchor[c][size_t(k)] = *a;
       double walk = 0.0;
-      for (int v : cl.views) walk += graph.dist(*a, views[size_t(v)].ground_key, k);
+      for (int v : cl.views) walk += graph.dist(*a, views[size_t(v)].ground_key, g);
       if (!std::isfinite(walk)) continue;
       delta[c][size_t(k)] = walk / out.speed[size_t(k)] + cl.facade_views / std::max(1e-6, team.species[size_t(k)].observation_speed);
     }
@@ -48,7 +49,7 @@ AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const
     for (int r = 0; r < R && !ok; ++r) {
       const int k = robots[size_t(r)].species;
       ok = robot_on_graph[size_t(r)] && std::isfinite(delta[c][size_t(k)]) &&
-           std::isfinite(graph.dist(out.robot_vertex[size_t(r)], out.anchor[c][size_t(k)], k));
+           std::isfinite(graph.dist(out.robot_vertex[size_t(r)], out.anchor[c][size_t(k)], team.graph_species_of(k)));
     }
     if (ok) out.city_cluster.push_back(int(c));
     else out.dropped.push_back(int(c));
@@ -97,7 +98,7 @@ AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const
           continue;
         }
         if (b >= N || !vertex(b, kb)) continue;  // nobody travels into a depot (open routes)
-        m.set(a, b, graph.dist(ka, kb, k) / out.speed[size_t(k)]);
+        m.set(a, b, graph.dist(ka, kb, team.graph_species_of(k)) / out.speed[size_t(k)]);
       }
     }
     p.travel[size_t(k)] = std::move(m);

@@ -103,6 +103,7 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
   PlanResult out;
   out.round = req.round;
   out.planner = name();
+  out.path_species = team.graph_species_of(req.robots[size_t(req.self)].species);
 
   // Task views, standing only where some robot can drive to.
   const highlevel::TopologyGraph& graph = req.map->graph();
@@ -217,6 +218,7 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
   PlanResult out;
   out.round = req.round;
   out.planner = name();
+  out.path_species = team.graph_species_of(req.robots[size_t(req.self)].species);
   const highlevel::TopologyGraph& graph = req.map->graph();
   const RoundInputs in = prepare_round(req, team, o);
   const MapContext& ctx = *in.context;
@@ -230,7 +232,8 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
   // species may take it; ties to the lower robot index.
   const size_t R = req.robots.size();
   std::vector<std::optional<uint64_t>> vertex(R);
-  for (size_t r = 0; r < R; ++r) vertex[r] = robot_vertex(graph, req.robots[r].position, req.robots[r].species);
+  for (size_t r = 0; r < R; ++r)
+    vertex[r] = robot_vertex(graph, req.robots[r].position, team.graph_species_of(req.robots[r].species));
   std::vector<std::vector<int>> owned(R);
   for (size_t v = 0; v < views.size(); ++v) {
     int best = -1;
@@ -238,7 +241,7 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
     for (size_t r = 0; r < R; ++r) {
       const int k = req.robots[r].species;
       if (!vertex[r] || (views[v].label != kPublic && views[v].label != k)) continue;
-      const double d = graph.dist(*vertex[r], views[v].ground_key, k);
+      const double d = graph.dist(*vertex[r], views[v].ground_key, team.graph_species_of(k));
       if (d < bd) bd = d, best = int(r);
     }
     if (best >= 0) owned[size_t(best)].push_back(int(v));

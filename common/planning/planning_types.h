@@ -68,6 +68,7 @@ struct PlanResult {
   int open_views = 0;             // views in clusters some robot can serve (0 = nothing left to do)
   std::optional<double> agreement;  // share of clusters assigned as in the reference
   std::string reference_source;     // whose shared solution was the reference ("" = none)
+  int path_species = -1;            // whose terrain the planning robot's paths use (-1: its own)
   StageTimes times;
   ViewGenerationStats view_stats;
 

@@ -31,17 +31,19 @@ void check_request(const std::string& planner, const PlanRequest& req, const Tea
 // end under them) and to vertices with room for the species' body (not, e.g., the ground seen
 // under a vehicle: paths may pass such spots, views may not stand there).
 std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
-                                                           const std::vector<RobotState>& robots, size_t species,
+                                                           const std::vector<RobotState>& robots,
+                                                           const TeamCapabilities& team,
                                                            const Eigen::AlignedBox3d& region) {
-  std::vector<std::unordered_set<uint64_t>> out(species);
+  std::vector<std::unordered_set<uint64_t>> out(team.species.size());
   for (const auto& r : robots) {
-    const auto start = robot_vertex(graph, r.position, r.species);
-    if (!start || size_t(r.species) >= species) continue;
+    if (size_t(r.species) >= out.size()) continue;
+    const int g = team.graph_species_of(r.species);
+    const auto start = robot_vertex(graph, r.position, g);
+    if (!start) continue;
     auto& set = out[size_t(r.species)];
     if (set.count(*start)) continue;  // a teammate of the same species is in the same component
-    for (const auto& [key, d] : graph.distances_from(*start, r.species))
-      if (const auto p = graph.position(key); p && region.contains(*p) && graph.room_to_stand(key, r.species))
-        set.insert(key);
+    for (const auto& [key, d] : graph.distances_from(*start, g))
+      if (const auto p = graph.position(key); p && region.contains(*p) && graph.room_to_stand(key, g)) set.insert(key);
   }
   return out;
 }
@@ -49,7 +51,7 @@ std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::Topo
 RoundInputs prepare_round(const PlanRequest& req, const TeamCapabilities& view_team, const PlannerOptions& o,
                           bool record_targets) {
   RoundInputs in;
-  in.reachable = reachable_ground(req.map->graph(), req.robots, view_team.species.size(), o.region);
+  in.reachable = reachable_ground(req.map->graph(), req.robots, view_team, o.region);
   in.context = std::make_unique<MapContext>(*req.map, o, union_of(in.reachable), req.given_up);
   in.views = generate_task_views(*in.context, view_team, o, &in.stats, record_targets ? &in.targets : nullptr);
   return in;

@@ -36,9 +36,11 @@ void check_request(const std::string& planner, const PlanRequest& request, const
 RoundInputs prepare_round(const PlanRequest& request, const TeamCapabilities& view_team, const PlannerOptions& options,
                           bool record_targets = false);
 
-// Ground vertices each species can drive to from its robots' positions (see RoundInputs).
+// Ground vertices each species can drive to from its robots' positions (see RoundInputs),
+// on the terrain of its graph species (TeamCapabilities::graph_species_of).
 std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
-                                                           const std::vector<RobotState>& robots, size_t species,
+                                                           const std::vector<RobotState>& robots,
+                                                           const TeamCapabilities& team,
                                                            const Eigen::AlignedBox3d& region);
 
 // Stage timing on the planner's clock (wall time in services, thread CPU time in benchmarks).

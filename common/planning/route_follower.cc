@@ -10,6 +10,15 @@ namespace {
 
 double horizontal(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return (a - b).head<2>().norm(); }
 
+// Whether a target still needs looking at: in the map, incomplete and not given up.
+bool open_target(uint64_t key, const highlevel::HighLevelMap& map, const GiveUpLedger& ledger) {
+  const highlevel::Supervoxel* sv = map.find(key);
+  return sv && !sv->covered && !ledger.given_up(key, sv->voxel_count);
+}
+bool open_view(const TaskView& v, const highlevel::HighLevelMap& map, const GiveUpLedger& ledger) {
+  return std::any_of(v.targets.begin(), v.targets.end(), [&](uint64_t t) { return open_target(t, map, ledger); });
+}
+
 constexpr double kProgressM = 0.5;    // moving this far counts as progress
 constexpr double kTrailStepM = 0.5;   // trail points are this far apart
 constexpr size_t kTrailLength = 12;
@@ -20,8 +29,24 @@ constexpr double kBackoffM = 1.0;     // back off to a trail point at least this
 RouteFollower::RouteFollower(FollowerOptions options, int path_species) : options_(options), species_(path_species) {}
 
 void RouteFollower::set_route(std::vector<TaskView> route) {
+  // The leg being driven is finished first: a new round may reorder what comes after it, but
+  // turning round every round (the map grows, clusters and their order change) reaches
+  // nothing. It stays first, in the new route's copy when it has one at the same spot.
+  std::optional<TaskView> leg;
+  if (driving_ && next_ < route_.size()) leg = route_[next_];
   route_ = std::move(route);
   next_ = 0;
+  if (leg) {
+    const auto same = std::find_if(route_.begin(), route_.end(), [&](const TaskView& v) {
+      return horizontal(v.position, leg->position) <= options_.reach_m;
+    });
+    if (same != route_.end()) std::rotate(route_.begin(), same, same + 1);
+    else route_.insert(route_.begin(), *leg);
+    ++counters_.legs_kept;
+    // The path to it is planned again (what to keep off may have changed since).
+    driving_ = false;
+    return;
+  }
   driving_ = false;
   progress_s_ = -1.0;
   // An observation in progress is finished first (the cost model paid for it); views of the
@@ -30,6 +55,14 @@ void RouteFollower::set_route(std::vector<TaskView> route) {
     const auto& targets = route_[next_++].targets;
     observed_targets_.insert(observed_targets_.end(), targets.begin(), targets.end());
   }
+}
+
+void RouteFollower::clear() {
+  route_.clear();
+  next_ = 0;
+  driving_ = false;
+  observing_ = false;
+  progress_s_ = -1.0;
 }
 
 std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector3d& position, DriveState state,
@@ -41,43 +74,61 @@ std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector
   track_progress(now_s, position, state);
 
   if (observing_) {
-    if (now_s >= observe_until_s_) {
+    // Done at the end of the dwell, or as soon as every target it is for is complete (the
+    // map lags the scans by about a settle time, so this never cuts a dwell short by more).
+    const bool all_done = std::none_of(observed_targets_.begin(), observed_targets_.end(),
+                                       [&](uint64_t t) { return open_target(t, map, ledger); });
+    if (now_s >= observe_until_s_ || all_done) {
+      if (all_done) ++counters_.dwells_cut_short;
       finish_observing(now_s, position);
-      return drive(position, map, keep_off);
+      return drive(position, map, keep_off, ledger);
     }
     const double per_aim = (observe_until_s_ - observe_start_s_) / double(aims_.size());
     const size_t index = std::min(aims_.size() - 1, size_t((now_s - observe_start_s_) / per_aim));
     return index != aim_index_ ? aim(index, position) : std::nullopt;
   }
   if (next_ >= route_.size()) return std::nullopt;
-  if (horizontal(route_[next_].position, position) <= options_.reach_m) {
-    std::optional<MotionOrder> order = begin_observing(now_s, position, map);
-    return observing_ ? order : drive(position, map, keep_off);  // ground views: on to the next
+  if (driving_ && !open_view(route_[next_], map, ledger)) {
+    // Its targets got complete (a teammate, or scans in passing) or given up: on to the next.
+    ++counters_.views_done_before;
+    ++next_;
+    driving_ = false;
   }
-  if (!driving_) return drive(position, map, keep_off);
+  if (next_ >= route_.size()) return std::nullopt;
+  if (horizontal(route_[next_].position, position) <= options_.reach_m) {
+    std::optional<MotionOrder> order = begin_observing(now_s, position, map, ledger);
+    return observing_ ? order : drive(position, map, keep_off, ledger);  // ground views: on to the next
+  }
+  if (!driving_) return drive(position, map, keep_off, ledger);
   const bool blocked = blocked_since_s_ >= 0.0 && now_s - blocked_since_s_ >= options_.blocked_s;
   const bool stuck = progress_s_ >= 0.0 && now_s - progress_s_ >= options_.stuck_s;
   if (!blocked && !stuck) return std::nullopt;
   skip_current(position, map, ledger);
-  return drive(position, map, keep_off);
+  return drive(position, map, keep_off, ledger);
 }
 
 std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Eigen::Vector3d& position,
-                                                          const highlevel::HighLevelMap& map) {
-  // Every consecutive view within reach is observed from here at once.
+                                                          const highlevel::HighLevelMap& map,
+                                                          const GiveUpLedger& ledger) {
+  // Every consecutive view within reach is observed from here at once, for its targets that
+  // are still open; a view with none left costs no dwell.
   observed_targets_.clear();
   aims_.clear();
   int facade_views = 0;
   for (; next_ < route_.size() && horizontal(route_[next_].position, position) <= options_.reach_m; ++next_) {
     const TaskView& v = route_[next_];
     ++counters_.views_reached;
-    observed_targets_.insert(observed_targets_.end(), v.targets.begin(), v.targets.end());
-    if (!v.facade) continue;
-    ++facade_views;
-    aims_.push_back(v.look_at);  // the view's own target first
-    for (uint64_t t : v.targets)
-      if (const highlevel::Supervoxel* sv = map.find(t); sv && sv->facade() && (sv->center - v.look_at).norm() > 0.3)
+    bool facade_open = false;
+    for (uint64_t t : v.targets) {
+      if (!open_target(t, map, ledger)) continue;
+      observed_targets_.push_back(t);
+      const highlevel::Supervoxel* sv = map.find(t);
+      if (v.facade && sv->facade()) {
         aims_.push_back(sv->center);
+        facade_open = true;
+      }
+    }
+    if (facade_open) ++facade_views;
   }
   driving_ = false;
   const double dwell = facade_views * options_.observation_time_s;
@@ -116,11 +167,16 @@ void RouteFollower::finish_observing(double now_s, const Eigen::Vector3d& positi
 }
 
 std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
-                                                const std::unordered_set<uint64_t>& keep_off) {
+                                                const std::unordered_set<uint64_t>& keep_off,
+                                                const GiveUpLedger& ledger) {
   std::unordered_set<uint64_t> avoid = avoid_;
   avoid.insert(keep_off.begin(), keep_off.end());
   const size_t first = next_;
   for (; next_ < route_.size(); ++next_) {
+    if (!open_view(route_[next_], map, ledger)) {
+      ++counters_.views_done_before;
+      continue;
+    }
     ExecutablePlan path = executable_path(map.graph(), position, species_, route_[next_], &avoid);
     if (!path.valid) {
       // No way there from here for us (maybe only around a spot we were blocked at): skip it
@@ -144,7 +200,7 @@ std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position,
     // The spots we avoid cut us off from every view: forget them and try the route again.
     avoid_.clear();
     next_ = first;
-    return drive(position, map, keep_off);
+    return drive(position, map, keep_off, ledger);
   }
   driving_ = false;
   if (!backoff_) return std::nullopt;

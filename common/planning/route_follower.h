@@ -4,9 +4,10 @@
 // its executable path, stop there and point the sensors at the view's targets for the
 // species' observation time (the gimbal of a long-range LiDAR sweeps them one after the
 // other), then move on. A ground view is done on arrival ("observed once a robot reaches its
-// centre"). Whether the targets got complete is judged a settle time later, when the map has
-// caught up with the scans, and what stayed incomplete counts as an attempt in the team's
-// GiveUpLedger.
+// centre"). Views whose targets are all complete (or given up) by the time the robot gets
+// there are passed by, and a dwell ends as soon as its targets are complete. Whether the
+// targets got complete is judged a settle time later, when the map has caught up with the
+// scans, and what stayed incomplete counts as an attempt in the team's GiveUpLedger.
 // When the robot is blocked or makes no progress, the view is skipped (an attempt too), the
 // vertex it could not reach is kept off by later paths, and the next path first backs off
 // along the robot's recent trail. No sockets: the planning service feeds it poses and the
@@ -49,6 +50,9 @@ struct FollowerCounters {
   int views_observed = 0;       // facade views dwelt at
   int views_skipped = 0;        // blocked or stuck on the way
   int views_without_path = 0;   // no path from here
+  int views_done_before = 0;    // every target complete or given up before the robot got there
+  int dwells_cut_short = 0;     // every target complete before the dwell was over
+  int legs_kept = 0;            // new routes that kept the leg being driven first
   double observing_s = 0.0;     // time spent standing and observing
 };
 
@@ -57,10 +61,12 @@ class RouteFollower {
   // `path_species`: the species index whose graph levels the paths use.
   RouteFollower(FollowerOptions options, int path_species);
 
-  // A new route (a planning round). An observation in progress is finished first; the new
-  // route's views at the same spot join it.
+  // A new route (a planning round). The leg being driven and an observation in progress are
+  // finished first; the new route's views at the same spot join them.
   void set_route(std::vector<TaskView> route);
   void set_path_species(int species) { species_ = species; }
+  // Drops the route, the leg and any observation (another planner takes over).
+  void clear();
 
   // One control cycle at sim time `now_s`. Returns the order to send when it changed (a new
   // path, a new aim); nullopt when the last order stands. `keep_off`: vertices no path may
@@ -84,9 +90,9 @@ class RouteFollower {
   };
 
   std::optional<MotionOrder> drive(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
-                                   const std::unordered_set<uint64_t>& keep_off);
+                                   const std::unordered_set<uint64_t>& keep_off, const GiveUpLedger& ledger);
   std::optional<MotionOrder> begin_observing(double now_s, const Eigen::Vector3d& position,
-                                             const highlevel::HighLevelMap& map);
+                                             const highlevel::HighLevelMap& map, const GiveUpLedger& ledger);
   std::optional<MotionOrder> aim(size_t target_index, const Eigen::Vector3d& position);
   void finish_observing(double now_s, const Eigen::Vector3d& position);
   void skip_current(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);

@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "common/planning/labels.h"
+#include "common/planning/mtsp_problem.h"
 
 namespace hexplore::planning {
 
@@ -160,6 +161,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     ++st.ground_views;
   }
   std::sort(views.begin(), views.end(), [](const TaskView& a, const TaskView& b) { return a.key < b.key; });
+  st.public_views = int(std::count_if(views.begin(), views.end(), [](const TaskView& v) { return v.label == kPublic; }));
   return views;
 }
 

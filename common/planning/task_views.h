@@ -59,6 +59,7 @@ struct ViewGenerationStats {
   int outside_region = 0;      // ISE supervoxels outside the exploration region (no view)
   int ignored = 0;             // ISE supervoxels given up on (no view)
   int unreachable_ground = 0;  // ground ISE supervoxels nobody can stand on (no view)
+  int public_views = 0;        // labelled c0 (every species may take them); the rest are private
   int64_t rays_cast = 0;
 };
 

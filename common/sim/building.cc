@@ -67,6 +67,17 @@ void add_slab(MeshBuilder& b, const Rect& outline, double z_bottom, double z_top
   }
 }
 
+void add_parapet(MeshBuilder& b, const Rect& h, double base_z, double height, double t, const std::vector<Side>& open) {
+  auto is_open = [&](Side side) { return std::find(open.begin(), open.end(), side) != open.end(); };
+  // South and north rails also fill the corners where a west or east rail stands; west and
+  // east rails fit between them.
+  const double x0 = is_open(Side::kWest) ? h.x0 : h.x0 - t, x1 = is_open(Side::kEast) ? h.x1 : h.x1 + t;
+  if (!is_open(Side::kSouth)) b.box({x0, h.y0 - t, base_z}, {x1, h.y0, base_z + height});
+  if (!is_open(Side::kNorth)) b.box({x0, h.y1, base_z}, {x1, h.y1 + t, base_z + height});
+  if (!is_open(Side::kWest)) b.box({h.x0 - t, h.y0, base_z}, {h.x0, h.y1, base_z + height});
+  if (!is_open(Side::kEast)) b.box({h.x1, h.y0, base_z}, {h.x1 + t, h.y1, base_z + height});
+}
+
 namespace {
 
 // Windows evenly spaced along a wall of `length`, skipping those that would cut a door.

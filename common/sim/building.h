@@ -54,6 +54,12 @@ struct BuildingSpec {
   bool roof = true;
 };
 
+// A guard wall `height` tall standing on the slab at `base_z` around the hole `hole`, on the
+// slab side of its edges, except along the sides listed in `open` (where a ramp or a stair
+// comes up). Keeps robots on an upper floor from driving into a stairwell, ramp or atrium.
+void add_parapet(MeshBuilder& b, const Rect& hole, double base_z, double height, double thickness,
+                 const std::vector<Side>& open = {});
+
 // Throws SceneError for a door smaller than kMinDoorWidthM x kMinDoorHeightM.
 void add_building(MeshBuilder& b, const BuildingSpec& spec);
 

@@ -77,7 +77,16 @@ std::vector<Eigen::Vector3d> reachable_ground(const RayCaster& caster, const cor
       if (to.x() < region.min().x() || to.x() > region.max().x() || to.y() < region.min().y() ||
           to.y() > region.max().y())
         continue;
-      const auto f = traverse(probe, here, to);
+      auto f = traverse(probe, here, to);
+      // A door only a little wider than the body is passed only by a body lined up with it,
+      // which a straight move from a cell centre rarely is: try again from a quarter or half a
+      // cell aside (turn, sidestep, go on), as a driver lines up with a door.
+      const Eigen::Vector2d aside(-d.y(), d.x());
+      for (const double s : {0.25, -0.25, 0.5, -0.5}) {
+        if (f) break;
+        const auto jog = traverse(probe, here, here.xy + s * aside);
+        if (jog) f = traverse(probe, *jog, jog->xy + d);
+      }
       if (!f) continue;
       if (!seen.insert(state_key(f->xy, f->ground_z, g)).second) continue;
       queue.push_back(*f);
@@ -106,9 +115,18 @@ std::vector<uint8_t> observable_mask(const RayCaster& caster, const SurfaceSampl
       mount_z = std::max(mount_z, l.mount_offset_m.z());
     }
     const double eye_height = species.body_half_extents_m.z() + mount_z;
-    std::unordered_set<uint64_t> thinned;
+    // One viewpoint per thinning cell and floor: the reachable point nearest the cell's centre,
+    // so the choice depends on what is reachable, not on the order the flood fill found it in.
+    const double spacing = options.viewpoint_spacing_m;
+    std::map<uint64_t, std::pair<double, Eigen::Vector3d>> thinned;
     for (const auto& p : reachable_ground(caster, species, starts, region, options)) {
-      if (!thinned.insert(state_key(p.head<2>(), p.z(), options.viewpoint_spacing_m)).second) continue;
+      const Eigen::Vector2d centre = ((p.head<2>() / spacing).array().floor() + 0.5).matrix() * spacing;
+      const double d2 = (p.head<2>() - centre).squaredNorm();
+      auto [it, fresh] = thinned.try_emplace(state_key(p.head<2>(), p.z(), spacing), d2, p);
+      if (!fresh && d2 < it->second.first) it->second = {d2, p};
+    }
+    for (const auto& [key, best] : thinned) {
+      const Eigen::Vector3d& p = best.second;
       views.push_back({Eigen::Vector3f(static_cast<float>(p.x()), static_cast<float>(p.y()),
                                        static_cast<float>(p.z() + eye_height)),
                        static_cast<float>(range)});

@@ -3,6 +3,8 @@
 // the per-scene builders that scenes.cc dispatches to.
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -27,8 +29,36 @@ void debris_field(MeshBuilder& b, Rng& rng, const Rect& area, double cell, doubl
 // Loose debris blocks on a floor inside `area`.
 void floor_debris(MeshBuilder& b, Rng& rng, const Rect& area, int blocks, double max_size, double floor_z);
 
+// A climb between two floors of a generated scene, as a path a robot follows from the lower
+// floor (path.front(), facing the second point) up to the upper floor at height top_z. Tests
+// drive robots along it; the scene and the tests share it so they cannot drift apart.
+struct Climb {
+  std::string name;
+  std::vector<Eigen::Vector3d> path;
+  double top_z = 0.0;
+};
+// The ramps and stairs of the multi-storey scene (the same for every seed).
+std::vector<Climb> multi_storey_climbs();
+
+// The office scene's floor plan (what the generator builds walls from; tests check doors and
+// rooms against it).
+struct OfficeRoom {
+  Rect interior;                 // floor inside the room's walls
+  Rect door;                     // the gap through the corridor wall (its full thickness)
+  double door_width_m = 0.0;
+  bool door_faces_north = false;  // the door wall is the room's north wall (else its south one)
+};
+struct OfficeLayout {
+  Rect footprint;
+  std::vector<Rect> corridors;  // clear floor of the long and cross corridors
+  std::vector<OfficeRoom> rooms;
+};
+OfficeLayout office_layout(uint64_t seed);
+
 SceneInfo make_single_building(uint64_t seed);
 SceneInfo make_multi_building(uint64_t seed);
 SceneInfo make_corridor_stairs(uint64_t seed);
+SceneInfo make_office(uint64_t seed);
+SceneInfo make_multi_storey(uint64_t seed);
 
 }  // namespace hexplore::sim::detail

@@ -8,7 +8,9 @@
 
 namespace hexplore::sim {
 
-std::vector<std::string> scene_names() { return {"single-building", "multi-building", "corridor-stairs"}; }
+std::vector<std::string> scene_names() {
+  return {"single-building", "multi-building", "corridor-stairs", "office", "multi-storey"};
+}
 
 bool is_builtin_scene(const std::string& name) {
   for (const auto& n : scene_names())
@@ -20,6 +22,8 @@ SceneInfo generate_scene(const std::string& name, uint64_t seed) {
   if (name == "single-building") return detail::make_single_building(seed);
   if (name == "multi-building") return detail::make_multi_building(seed);
   if (name == "corridor-stairs") return detail::make_corridor_stairs(seed);
+  if (name == "office") return detail::make_office(seed);
+  if (name == "multi-storey") return detail::make_multi_storey(seed);
   std::string known;
   for (const auto& n : scene_names()) known += (known.empty() ? "" : ", ") + n;
   throw SceneError(name, "unknown scene; built-in scenes are " + known + " (or give a mesh file path)");

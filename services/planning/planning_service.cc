@@ -96,6 +96,20 @@ void PlanningService::setup(service::ServiceContext& context) {
   }
   species_index_ = team.species_index(species->name).value_or(0);
   follower_ = std::make_unique<planning::RouteFollower>(follow, species_index_);
+  // What the robot sees on its way counts too: the band its fixed (not gimbal-aimed) LiDARs cover.
+  double low = 90.0, high = -90.0;
+  for (const auto& l : species->lidars)
+    if (!l.gimbal) {
+      low = std::min(low, l.vertical_min_deg + l.mount_pitch_deg);
+      high = std::max(high, l.vertical_max_deg + l.mount_pitch_deg);
+    }
+  planning::PassingOptions passing = planning::passing_options(
+      capabilities_.species[size_t(species_index_)], std::max(low, options_.theta_l_deg),
+      std::min(high, options_.theta_u_deg), follow.observation_time_s);
+  passing.settle_s = follow.settle_s;
+  passing.spot_m = rules.distinct_m;
+  passing.ground_reach_m = follow.reach_m;
+  passing_ = std::make_unique<planning::PassingObserver>(passing, options_);
   peer_stuck_s_ = parse_positive(args, "peer-stuck-s", 30.0);
 
   auto& m = context.metrics();
@@ -207,7 +221,7 @@ bool PlanningService::switch_planner(const std::string& name) {
   if (!previous.empty()) {
     if (switches_) switches_->add({{"robot", robot_id_}, {"planner", name}})->increment();
     core::LogLine(core::LogLevel::kInfo, "planning") << robot_id_ << ": planner switched from " << previous << " to " << name;
-    follower_->set_route({});  // plan again with the new planner at the next cycle
+    follower_->clear();  // plan again with the new planner at the next cycle
   }
   return true;
 }
@@ -310,6 +324,11 @@ planning::DriveState PlanningService::drive_state() const {
 }
 
 void PlanningService::follow_route() {
+  const double now_s = core::ns_to_s(now_ns());
+  if (now_s - last_look_s_ >= 1.0) {
+    last_look_s_ = now_s;
+    passing_->step(now_s, positions_.at(robot_id_), *map_, ledger_);
+  }
   const auto order = follower_->step(core::ns_to_s(now_ns()), positions_.at(robot_id_), drive_state(), *map_,
                                      avoided_vertices(), ledger_);
   if (!order) return;
@@ -405,6 +424,7 @@ void PlanningService::replan(const std::string& reason) {
   }
   pub.publish(std::string(topics::kTeamPlan), solution);
   pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route));
+  follower_->set_path_species(res.path_species >= 0 ? res.path_species : species_index_);
   follower_->set_route(route);
   follow_route();  // the path to the first view at once
 }
@@ -418,6 +438,11 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
   };
   const planning::RobotPlan& mine = res.robots[size_t(req.self)];
   const planning::FollowerCounters& f = follower_->counters();
+  int complete[2] = {0, 0}, incomplete[2] = {0, 0};  // [ground, facade] supervoxels in the region
+  for (const auto& [key, sv] : map_->supervoxels()) {
+    if (!options_.region.contains(sv.center)) continue;
+    (sv.covered ? complete : incomplete)[sv.facade() ? 1 : 0]++;
+  }
   std::ostringstream j;
   j << "{\"t\": " << core::ns_to_s(now_ns()) << ", \"round\": " << round_ << ", \"reason\": \"" << reason
     << "\", \"planner\": \"" << active_name_ << "\", \"position\": " << vec(positions_.at(robot_id_))
@@ -425,7 +450,13 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
     << ", \"clusters\": " << res.clusters << ", \"open_views\": " << res.open_views
     << ", \"given_up\": " << ledger_.given_up_targets().size() << ", \"reference\": \"" << res.reference_source
     << "\", \"agreement\": " << res.agreement.value_or(-1.0) << ", \"time_s\": " << res.times.total_s
-    << ", \"own_clusters\": [";
+    << ", \"public_views\": " << res.view_stats.public_views << ", \"supervoxels\": {\"ground_complete\": " << complete[0]
+    << ", \"ground_incomplete\": " << incomplete[0] << ", \"facade_complete\": " << complete[1]
+    << ", \"facade_incomplete\": " << incomplete[1] << "}, \"clusters_per_robot\": [";
+  for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cluster_ids.size();
+  j << "], \"cost_s_per_robot\": [";
+  for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cost_s;
+  j << "], \"own_clusters\": [";
   for (size_t i = 0; i < mine.cluster_centers.size(); ++i) j << (i ? ", " : "") << vec(mine.cluster_centers[i]);
   j << "], \"route\": [";
   for (size_t i = 0; i < mine.route.size(); ++i)
@@ -433,6 +464,8 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
       << ", \"targets\": " << mine.route[i].targets.size() << "}";
   j << "], \"follower\": {\"reached\": " << f.views_reached << ", \"observed\": " << f.views_observed
     << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
+    << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
+    << ", \"legs_kept\": " << f.legs_kept << ", \"passing_observations\": " << passing_->observations()
     << ", \"observing_s\": " << f.observing_s << "}}\n";
   trace_ << j.str();
   trace_.flush();

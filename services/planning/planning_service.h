@@ -26,6 +26,7 @@
 
 #include "common/highlevel/high_level_map.h"
 #include "common/planning/give_up_ledger.h"
+#include "common/planning/passing_observer.h"
 #include "common/planning/planner_registry.h"
 #include "common/planning/route_follower.h"
 #include "common/service/service.h"
@@ -97,6 +98,8 @@ class PlanningService : public service::Service {
   std::map<std::string, int64_t> peer_moved_ns_;      // robot id -> now_ns() when it got there
   planning::GiveUpLedger ledger_;                     // targets given up by us and the team
   std::unique_ptr<planning::RouteFollower> follower_;  // executes our route
+  std::unique_ptr<planning::PassingObserver> passing_;  // what we see on the way counts too
+  double last_look_s_ = -1.0;
   int species_index_ = 0;
   int own_motion_ = 0;                                // our last v1::MotionState
   int64_t sim_time_ns_ = 0;

@@ -1,6 +1,7 @@
 // Terrain metrics, traversal risk and the facade/ground partition on analytic geometry.
 
 #include <cmath>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -163,6 +164,95 @@ TEST(Terrain, StairsAreClimbableByTheTrackedSpeciesOnly) {
   ASSERT_TRUE(map.find(top).has_value());
   EXPECT_TRUE(testing::reachable(map, bottom, top, kSlugcatBit));
   EXPECT_FALSE(testing::reachable(map, bottom, top, kMr1000Bit));
+}
+
+// A flight of eight 0.176 m risers on 0.30 m treads (30.5 deg) from z = 0.05 up to a landing.
+struct Flight {
+  std::vector<float> risers, treads;  // treads include the floor below and the landing
+  double top_x = 0.0, top_z = 0.0;
+};
+Flight flight() {
+  Flight f;
+  add_floor(f.treads, -2, 0.07, -1.2, 1.2, 0.05, 0.015);
+  double x = 0.07, z = 0.05;
+  for (int i = 0; i < 8; ++i) {
+    add_patch(f.risers, {x, -1.2, z}, {0, 2.4, 0}, {0, 0, 0.176}, 0.015);
+    z += 0.176;
+    add_floor(f.treads, x, x + (i == 7 ? 6.0 : 0.30), -1.2, 1.2, z, 0.015);
+    x += 0.30;
+  }
+  f.top_x = x - 0.30;
+  f.top_z = z;
+  return f;
+}
+
+// Seen from its top landing, a staircase shows only its treads, and the sensor (0.55 m above
+// the landing, 4 m on) lies below the flight's mean plane: its fitted normals used to be
+// turned towards the sensor, i.e. down, and the flight a robot had just climbed became a
+// ceiling (facade) in its map, cut off from the floor below. Treads seen from above face up.
+TEST(Terrain, StairsSeenFromTheirTopLandingStayGround) {
+  PerceptionMap map(two_species_params());
+  const Flight f = flight();
+  std::vector<float> all = f.treads;
+  all.insert(all.end(), f.risers.begin(), f.risers.end());
+  map.integrate(scan_of(all, {-1, 0, 0.55}), {});
+  map.integrate(scan_of(f.treads, {f.top_x + 4.0, 0, f.top_z + 0.55}), {});
+  int on_flight = 0;
+  for (const VoxelView& v : map.voxels()) {
+    if (!inside_xy(v, 0.1, f.top_x - 0.1, -1.0, 1.0)) continue;
+    ++on_flight;
+    EXPECT_GT(v.normal.z(), 0.0f) << "at " << v.mean.transpose();
+  }
+  EXPECT_GT(on_flight, 200);
+  const VoxelKey bottom = map.key_of({-1.5, 0, 0.05});
+  const VoxelKey landing = map.key_of({f.top_x + 2.0, 0, f.top_z - 0.02});
+  EXPECT_TRUE(testing::reachable(map, bottom, landing, kSlugcatBit));
+}
+
+// The floor right at the foot of a riser holds the riser's bottom in its own column: the
+// surface rising there is a step (0.2 m: the tracked species' to take, not the wheeled one's),
+// not an overhead obstacle 0.15 m up, which made the whole foot of every flight high risk.
+TEST(Terrain, FloorAtTheFootOfARiserIsAStepNotAnOverhang) {
+  PerceptionMap map(two_species_params());
+  const std::vector<float> pts = step_scene(0.20);
+  map.integrate(scan_of(pts, {-1, 0, 1}), {});
+  int foot = 0;
+  for (const VoxelView& v : map.voxels()) {
+    if (!inside_xy(v, 0.0, 0.07, -1.2, 1.2) || v.key.iz != 0) continue;  // the column holding the riser
+    ++foot;
+    EXPECT_TRUE(v.low_risk_species_mask & kSlugcatBit) << "at " << v.mean.transpose();
+    EXPECT_FALSE(v.low_risk_species_mask & kMr1000Bit) << "at " << v.mean.transpose();
+  }
+  EXPECT_GT(foot, 10);
+}
+
+// Voxel slopes are allowed half a step steeper over the body's length than the species'
+// slope limit, the tolerance the simulated body gets (stair nosings): a voxel slope above
+// 35 deg no longer cuts a 30 deg flight for SLUGCAT. Smooth ramps show the allowance: 38 deg
+// is SLUGCAT's and 13 deg MR1000's (the sim lets both bodies climb them), 42 and 16 are not.
+TEST(Terrain, SlopeAllowanceIsTheSimulatedBodysTolerance) {
+  const MapParams params = two_species_params();
+  EXPECT_NEAR(slope_allowance_deg(params.species[0]), 40.0, 0.1);  // atan(tan 35 + 0.125 / 0.9)
+  EXPECT_NEAR(slope_allowance_deg(params.species[1]), 14.2, 0.1);  // atan(tan 12 + 0.04 / 1.0)
+  SpeciesLimits no_body = params.species[0];
+  no_body.body_length_m = 0.0;
+  EXPECT_DOUBLE_EQ(slope_allowance_deg(no_body), 35.0);
+  for (const auto& [deg, slugcat, mr1000] : {std::tuple{13.0, true, true}, std::tuple{16.0, true, false},
+                                             std::tuple{38.0, true, false}, std::tuple{42.0, false, false}}) {
+    PerceptionMap map(params);
+    std::vector<float> pts;
+    const double t = std::tan(deg * M_PI / 180.0);
+    add_patch(pts, {0, -2, 0.05}, {2.5, 0, 2.5 * t}, {0, 4, 0}, 0.015);
+    map.integrate(scan_of(pts, {1.25, 0, 3}), {});
+    int interior = 0;
+    for (const VoxelView& v : map.voxels()) {
+      if (!inside_xy(v, 0.5, 2.0, -1.5, 1.5)) continue;
+      ++interior;
+      EXPECT_EQ((v.low_risk_species_mask & kSlugcatBit) != 0, slugcat) << deg << " deg at " << v.mean.transpose();
+      EXPECT_EQ((v.low_risk_species_mask & kMr1000Bit) != 0, mr1000) << deg << " deg at " << v.mean.transpose();
+    }
+    EXPECT_GT(interior, 100) << deg;
+  }
 }
 
 TEST(Terrain, IncrementalIntegrationMatchesOneShot) {

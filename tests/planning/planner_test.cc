@@ -274,5 +274,30 @@ TEST(Planner, AblationsPlanAndRegistryNamesThem) {
   EXPECT_LT(flat.views, full.views);
 }
 
+// NoHetero treats every robot as the weakest species in every mechanism: with every robot
+// west of the rubble strip (x 24-25 m, traversal requirement 2) that only the tracked species
+// could cross, no view stands on or beyond it, and paths use the wheeled species' terrain;
+// the full planner gives the tracked robot the far side.
+TEST(Planners, NoHeteroUsesTheWeakestSpeciesTerrainForEveryone) {
+  Fixture f;
+  f.team.robots.erase(f.team.robots.begin() + 1);  // slug2 starts east of the strip
+  f.caps = capabilities_from(f.team);
+  const int mr1000 = *f.team.species_index("MR1000");
+  bool east_for_full = false;
+  for (int self = 0; self < int(f.team.robots.size()); ++self) {
+    const PlanRequest req = f.request(self);
+    const PlanResult flat = f.planner("no-hetero")->plan(req);
+    EXPECT_EQ(flat.path_species, mr1000);
+    for (const auto& v : flat.robots[size_t(self)].route) {
+      EXPECT_LT(v.position.x(), 24.0) << req.robots[size_t(self)].id << ": a view across the rubble";
+      EXPECT_LE(v.traversal_requirement, 1);
+    }
+    const PlanResult full = f.planner("hexplore")->plan(req);
+    EXPECT_EQ(full.path_species, req.robots[size_t(self)].species);
+    for (const auto& v : full.robots[size_t(self)].route) east_for_full |= v.position.x() > 25.0;
+  }
+  EXPECT_TRUE(east_for_full) << "the full planner never uses the tracked robot's terrain";
+}
+
 }  // namespace
 }  // namespace hexplore::planning

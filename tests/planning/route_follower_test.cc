@@ -180,6 +180,68 @@ TEST(RouteFollower, BlockedOnTheWaySkipsTheViewBacksOffAndCountsAnAttempt) {
   EXPECT_EQ(d.ledger.attempts(kWall), 1);
 }
 
+TEST(RouteFollower, ADwellEndsAsSoonAsItsTargetsAreComplete) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
+  f.set_route({facade, next});
+  ASSERT_TRUE(f.step(0.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  EXPECT_FALSE(f.step(3.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  set_covered(d.map, kWall);
+  const auto leave = f.step(3.2, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(leave);
+  EXPECT_EQ(leave->path.goal.ground_key, next.ground_key);
+  EXPECT_EQ(f.counters().dwells_cut_short, 1);
+}
+
+TEST(RouteFollower, ViewsWhoseTargetsAreDoneArePassedBy) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
+  set_covered(d.map, kWall);  // a teammate completed it
+  f.set_route({facade, next});
+  const auto order = f.step(0.0, {10.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(order);
+  EXPECT_EQ(order->path.goal.ground_key, next.ground_key);
+  EXPECT_EQ(f.counters().views_done_before, 1);
+  // Given up counts as done too.
+  Drive e;
+  e.ledger.merge(kWall, 40);
+  RouteFollower g(e.options, 0);
+  g.set_route({facade, next});
+  const auto other = g.step(0.0, facade.position, DriveState::kIdle, e.map, e.keep_off, e.ledger);
+  ASSERT_TRUE(other);
+  EXPECT_FALSE(other->observing);
+  EXPECT_EQ(other->path.goal.ground_key, next.ground_key);
+}
+
+TEST(RouteFollower, ANewRouteKeepsTheLegBeingDriven) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView east = view_at(d.map, {10.5, 1.5, 0}, false);
+  const TaskView north = view_at(d.map, {1.5, 6.5, 0}, false);
+  f.set_route({east, north});
+  ASSERT_TRUE(f.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  f.step(5.0, {3.5, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  // A new round puts north first: east is still finished first (its path planned again).
+  f.set_route({north, east});
+  ASSERT_EQ(f.route().front().ground_key, east.ground_key);
+  EXPECT_EQ(f.route().size(), 2u);
+  const auto again = f.step(5.2, {3.6, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->path.goal.ground_key, east.ground_key);
+  // A round without it: it is kept in front of the new route.
+  f.set_route({north});
+  ASSERT_EQ(f.route().size(), 2u);
+  EXPECT_EQ(f.route().front().ground_key, east.ground_key);
+  EXPECT_EQ(f.counters().legs_kept, 2);
+  const auto next = f.step(30.0, east.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(next);
+  EXPECT_EQ(next->path.goal.ground_key, north.ground_key);
+}
+
 TEST(GiveUpLedger, GivesUpAfterTwoDistinctSpotsOrThreeTries) {
   GiveUpLedger l;
   EXPECT_FALSE(l.observed(1, {0, 0, 0}, 30));

@@ -1,5 +1,7 @@
 #include "common/sim/robot_motion.h"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "common/sim/building.h"
@@ -252,6 +254,60 @@ TEST(RobotMotion, SingleBuildingDebrisYardNeedsTheTrackedRobot) {
   RobotMotion wheeled(caster, core::builtin_mr1000(), {29.25, 24.0, 0}, -M_PI / 2);
   EXPECT_EQ(drive(wheeled, path, 120), MotionState::kBlocked);
   EXPECT_GT(wheeled.ground_position().y(), 20.5);
+}
+
+
+// The multi-storey scene's ramps (16 and 18 deg) and stairs (0.176 m risers) between its
+// floors: the tracked robot drives up every one of them to the floor above, the wheeled robot
+// up none (slope limit 12 deg, step limit 0.08 m).
+TEST(RobotMotion, MultiStoreyClimbsTakeTheTrackedRobotUpstairsOnly) {
+  const auto scene = generate_scene("multi-storey", 1);
+  const RayCaster caster(scene.mesh);
+  for (const auto& climb : detail::multi_storey_climbs()) {
+    const Eigen::Vector3d start = climb.path.front(), towards = climb.path[1];
+    const double yaw = std::atan2(towards.y() - start.y(), towards.x() - start.x());
+    const std::vector<Eigen::Vector3d> rest(climb.path.begin() + 1, climb.path.end());
+    RobotMotion tracked(caster, core::builtin_slugcat(), start, yaw);
+    EXPECT_EQ(drive(tracked, rest, 120), MotionState::kIdle)
+        << climb.name << ": " << to_string(tracked.block_reason()) << " at " << tracked.ground_position().transpose();
+    EXPECT_NEAR(tracked.ground_position().z(), climb.top_z, 1e-3) << climb.name;
+    RobotMotion wheeled(caster, core::builtin_mr1000(), start, yaw);
+    EXPECT_EQ(drive(wheeled, rest, 120), MotionState::kBlocked) << climb.name;
+    EXPECT_LT(wheeled.ground_position().z(), start.z() + 0.3) << climb.name;  // its front edge may be on the foot
+  }
+}
+
+
+// office: the wheeled robot drives from the corridor through the door of the narrowest room
+// (lined up with the door, which is only 0.2-0.3 m wider than the body), turns round inside
+// and leaves again; the room is a dead end, so it must turn (or reverse) where it is small.
+TEST(RobotMotion, WheeledRobotTurnsRoundInTheNarrowestOfficeRoom) {
+  const auto layout = detail::office_layout(1);
+  const auto scene = generate_scene("office", 1);
+  const RayCaster caster(scene.mesh);
+  const auto narrowest = std::min_element(layout.rooms.begin(), layout.rooms.end(), [](const auto& a, const auto& b) {
+    return a.interior.x1 - a.interior.x0 < b.interior.x1 - b.interior.x0;
+  });
+  const auto& room = *narrowest;
+  EXPECT_LT(room.interior.x1 - room.interior.x0, 3.0);
+  const double door_x = 0.5 * (room.door.x0 + room.door.x1), wall_y = 0.5 * (room.door.y0 + room.door.y1);
+  const double into = room.door_faces_north ? -1.0 : 1.0;  // from the door wall into the room
+  const Eigen::Vector3d corridor(door_x, wall_y - into * 0.9, 0), doorway(door_x, wall_y + into * 0.9, 0);
+  const Eigen::Vector3d inside(0.5 * (room.interior.x0 + room.interior.x1), 0.5 * (room.interior.y0 + room.interior.y1), 0);
+  RobotMotion robot(caster, core::builtin_mr1000(), corridor, std::atan2(into, 0.0));
+  EXPECT_EQ(drive(robot, {doorway, inside}, 60), MotionState::kIdle)
+      << "in: " << to_string(robot.block_reason()) << " at " << robot.ground_position().transpose();
+  EXPECT_TRUE(room.interior.contains(robot.ground_position().x(), robot.ground_position().y()));
+  EXPECT_EQ(drive(robot, {doorway, corridor}, 60), MotionState::kIdle)
+      << "out: " << to_string(robot.block_reason()) << " at " << robot.ground_position().transpose();
+  EXPECT_LT((robot.ground_position() - corridor).norm(), 1e-3);
+  // Leaving at a slant instead (what a path through waypoints off the door's axis asks for)
+  // runs into the jamb: the body stops there, blocked, as SLUGCAT did in the office mission.
+  RobotMotion slant(caster, core::builtin_mr1000(), inside, std::atan2(-into, 0.0));
+  const Eigen::Vector3d aside(door_x + 0.9, wall_y - into * 0.9, 0);
+  EXPECT_EQ(drive(slant, {aside}, 60), MotionState::kBlocked);
+  EXPECT_EQ(slant.block_reason(), TerrainVerdict::kObstacle);
+  EXPECT_TRUE(room.interior.contains(slant.ground_position().x(), slant.ground_position().y()));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "common/sim/ray_caster.h"
 #include "common/sim/robot_motion.h"
 #include "common/sim/scene_error.h"
+#include "common/sim/scene_parts.h"
 
 namespace hexplore::sim {
 namespace {
@@ -160,6 +161,85 @@ TEST(Scenes, OsrfColladaOriginalLoadsWithImportOptions) {
   const auto ply = load_mesh(dir + "parts/collapsed_house.ply").bounds();
   EXPECT_LT((dae.min() - ply.min()).norm(), 0.02);
   EXPECT_LT((dae.max() - ply.max()).norm(), 0.02);
+}
+
+
+// office: every room's door is a real gap of 0.90-1.00 m in its corridor wall (wider than the
+// wheeled body by at least 0.2 m, narrower than it is long) and the walls either side of it
+// are solid; rooms are small.
+TEST(Scenes, OfficeDoorsAreGapsJustWiderThanTheWheeledBody) {
+  const auto layout = detail::office_layout(1);
+  const auto scene = generate_scene("office", 1);
+  const RayCaster caster(scene.mesh);
+  const double mr1000_width = 2 * core::builtin_mr1000().body_half_extents_m.y();
+  ASSERT_GE(layout.rooms.size(), 30u);
+  for (const auto& room : layout.rooms) {
+    const Rect& d = room.door;
+    EXPECT_GE(room.door_width_m, 0.90);
+    EXPECT_LE(room.door_width_m, 1.00);
+    EXPECT_GE(room.door_width_m, mr1000_width + 0.2);
+    EXPECT_NEAR(d.x1 - d.x0, room.door_width_m, 1e-9);
+    const double w = room.interior.x1 - room.interior.x0, depth = room.interior.y1 - room.interior.y0;
+    EXPECT_GE(w, 2.2);
+    EXPECT_LE(w, 4.6);
+    EXPECT_LE(depth, 3.8);
+    // Across the wall line, at 1 m: open through the door, wall just beside it.
+    const double y_from = room.door_faces_north ? d.y0 - 0.5 : d.y1 + 0.5;
+    const Eigen::Vector3f dir(0, room.door_faces_north ? 1.0f : -1.0f, 0);
+    const double mid = 0.5 * (d.x0 + d.x1);
+    for (double x : {mid, d.x0 + 0.05, d.x1 - 0.05})
+      EXPECT_EQ(caster.cast(Eigen::Vector3f(x, y_from, 1.0), dir, 0.0f, 1.0f), RayCaster::kMiss)
+          << "door of the room at x " << room.interior.x0 << " is blocked at x " << x;
+    for (double x : {d.x0 - 0.05, d.x1 + 0.05})
+      EXPECT_NE(caster.cast(Eigen::Vector3f(x, y_from, 1.0), dir, 0.0f, 1.0f), RayCaster::kMiss)
+          << "no wall beside the door of the room at x " << room.interior.x0 << " (x " << x << ")";
+  }
+}
+
+// office: a robot of either species gets from the starts into every room (each is a dead end
+// behind one door), by the evaluator's flood fill on its default 0.5 m grid: doors lie anywhere
+// on that grid, so it must line the body up with them (before, it missed 9 of 41 rooms for
+// SLUGCAT and 20 for MR1000, and their surfaces did not count as observable).
+TEST(Scenes, OfficeRoomsAreReachableByBothSpecies) {
+  const auto layout = detail::office_layout(1);
+  const auto scene = generate_scene("office", 1);
+  const RayCaster caster(scene.mesh);
+  for (const auto& species : {core::builtin_slugcat(), core::builtin_mr1000()}) {
+    const std::vector<Eigen::Vector3d> starts = {scene.suggested_starts.front()};
+    const auto ground = reachable_ground(caster, species, starts, scene.site);
+    size_t rooms_reached = 0;
+    for (const auto& room : layout.rooms) {
+      bool in = false;
+      for (const auto& p : ground) in = in || room.interior.contains(p.x(), p.y());
+      rooms_reached += in;
+    }
+    EXPECT_EQ(rooms_reached, layout.rooms.size()) << species.name;
+  }
+}
+
+// multi-storey: the tracked robot reaches both upper levels from the starts (ramps and
+// stairs), the wheeled robot only the ground level; both get around the ground floor.
+TEST(Scenes, MultiStoreyUpperLevelsNeedTheTrackedRobot) {
+  const auto scene = generate_scene("multi-storey", 1);
+  const RayCaster caster(scene.mesh);
+  auto levels = [&](const core::SpeciesConfig& species) {
+    const std::vector<Eigen::Vector3d> starts = {scene.suggested_starts.front()};
+    std::array<size_t, 3> n{0, 0, 0};
+    for (const auto& p : reachable_ground(caster, species, starts, scene.site)) {
+      const bool indoors = p.x() > 0.25 && p.x() < 31.75 && p.y() > 0.25 && p.y() < 21.75;
+      if (std::abs(p.z() - 6.0) < 0.05) ++n[2];
+      else if (std::abs(p.z() - 3.0) < 0.05) ++n[1];
+      else if (std::abs(p.z()) < 0.05 && indoors) ++n[0];
+    }
+    return n;
+  };
+  const auto tracked = levels(core::builtin_slugcat()), wheeled = levels(core::builtin_mr1000());
+  EXPECT_GT(tracked[0], 1000u);
+  EXPECT_GT(tracked[1], 1000u);  // level 1 is ~600 m2 of floor: 4 cells per m2
+  EXPECT_GT(tracked[2], 1000u);
+  EXPECT_GT(wheeled[0], 1000u);
+  EXPECT_EQ(wheeled[1], 0u);
+  EXPECT_EQ(wheeled[2], 0u);
 }
 
 }  // namespace
