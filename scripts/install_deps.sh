@@ -7,6 +7,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   protobuf-compiler libprotobuf-dev
   libzmq3-dev cppzmq-dev
+  libzstd-dev  # compression of team payloads on the radio (common/transport/compression)
   libeigen3-dev libpcl-dev liboctomap-dev
   prometheus-cpp-dev libyaml-cpp-dev
   libembree-dev libassimp-dev

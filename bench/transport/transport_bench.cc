@@ -3,7 +3,9 @@
 // wall clock send -> receive, both processes on one host). The parent publishes; it starts
 // a copy of itself (--sink) that subscribes and prints the receiving side's figures.
 //
-//   transport_bench [--count N] [--latency-seconds S] [--payload-bytes B]
+//   transport_bench [--count N] [--latency-seconds S] [--payload-bytes B] [--wire-only true]
+// It first prints the bytes typical team messages take on the radio, schema v1 against v2
+// (team_message_bytes.h); --wire-only true stops there.
 
 #include <fcntl.h>
 #include <poll.h>
@@ -18,6 +20,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench/transport/team_message_bytes.h"
 #include "common/core/clock.h"
 #include "common/metrics/prometheus_registry.h"
 #include "common/transport/event_loop.h"
@@ -202,6 +205,7 @@ int run_source(const Args& args, const char* self) {
 
 int main(int argc, char** argv) {
   Args args;
+  bool wire_only = false;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
     const char* value = argv[i + 1];
@@ -209,12 +213,17 @@ int main(int argc, char** argv) {
     else if (flag == "--latency-seconds") args.latency_seconds = std::stoi(value);
     else if (flag == "--payload-bytes") args.payload_bytes = std::stoul(value);
     else if (flag == "--sink") args.sink_endpoint = value;
+    else if (flag == "--wire-only") wire_only = std::string(value) == "true";
     else {
-      std::fprintf(stderr, "error: unknown flag %s\nusage: %s [--count N] [--latency-seconds S] [--payload-bytes B]\n",
+      std::fprintf(stderr,
+                   "error: unknown flag %s\nusage: %s [--count N] [--latency-seconds S] [--payload-bytes B] "
+                   "[--wire-only true]\n",
                    flag.c_str(), argv[0]);
       return 2;
     }
   }
   if (!args.sink_endpoint.empty()) return run_sink(args);
+  hexplore::bench::print_team_message_bytes();
+  if (wire_only) return 0;
   return run_source(args, "/proc/self/exe");
 }

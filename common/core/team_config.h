@@ -65,6 +65,19 @@ struct RobotConfig {
   double start_yaw_deg = 0.0;
 };
 
+// The team radio as the simulation models it (transport.radio; common/transport/link_model.h).
+// All zero is an ideal link. Applies to the team topics between robots; the station, a
+// recorder of the experiment, hears and is heard directly.
+struct RadioConfig {
+  double bandwidth_bytes_per_s = 0.0;  // each robot's transmit capacity; 0 = unlimited
+  double latency_s = 0.0;              // added to every message once it left the queue
+  double loss = 0.0;                   // chance that one receiver misses one message, [0, 1)
+  double range_m = 0.0;                // robots farther apart hear nothing of each other; 0 = unlimited
+  double max_queue_age_s = 2.0;        // a message that would wait longer for the channel is dropped
+
+  bool active() const { return bandwidth_bytes_per_s > 0.0 || latency_s > 0.0 || loss > 0.0 || range_m > 0.0; }
+};
+
 // Where the services listen. Every service binds one PUB socket and one ROUTER socket;
 // ports are base_port + robot_index * ports_per_robot + service offset (see endpoints.h).
 struct TransportConfig {
@@ -77,6 +90,7 @@ struct TransportConfig {
   int receive_high_water_mark = 10000;
   int64_t max_message_bytes = 64 * 1024 * 1024;
   int linger_ms = 1000;                  // how long a closing socket may flush queued messages
+  RadioConfig radio;
 };
 
 // The paper's parameter table (defaults) plus implementation choices.

@@ -145,10 +145,29 @@ RobotConfig read_robot(const Reader& r, const YAML::Node& n, const std::string& 
   return robot;
 }
 
+void read_radio(const Reader& r, const YAML::Node& n, RadioConfig& radio) {
+  const std::string path = "transport.radio";
+  r.only_keys(n, path, {"bandwidth_bytes_per_s", "latency_s", "loss", "range_m", "max_queue_age_s"});
+  r.read(n, path, "bandwidth_bytes_per_s", radio.bandwidth_bytes_per_s);
+  r.read(n, path, "latency_s", radio.latency_s);
+  r.read(n, path, "loss", radio.loss);
+  r.read(n, path, "range_m", radio.range_m);
+  r.read(n, path, "max_queue_age_s", radio.max_queue_age_s);
+  auto check = [&](const char* key, bool ok, const char* problem) {
+    if (!ok) r.fail(n[key], path + "." + key, problem);
+  };
+  check("bandwidth_bytes_per_s", radio.bandwidth_bytes_per_s >= 0.0, "must be >= 0 (0 = unlimited)");
+  check("latency_s", radio.latency_s >= 0.0 && radio.latency_s <= 60.0, "must be in [0, 60] seconds");
+  check("loss", radio.loss >= 0.0 && radio.loss < 1.0, "must be in [0, 1)");
+  check("range_m", radio.range_m >= 0.0, "must be >= 0 (0 = unlimited)");
+  check("max_queue_age_s", radio.max_queue_age_s > 0.0 && radio.max_queue_age_s <= 600.0, "must be in (0, 600] seconds");
+}
+
 void read_transport(const Reader& r, const YAML::Node& n, TransportConfig& t) {
   const std::string path = "transport";
   r.only_keys(n, path, {"scheme", "host_template", "base_port", "ports_per_robot", "ipc_dir", "send_high_water_mark",
-                        "receive_high_water_mark", "max_message_bytes", "linger_ms"});
+                        "receive_high_water_mark", "max_message_bytes", "linger_ms", "radio"});
+  if (const auto radio = n["radio"]; radio.IsDefined() && !radio.IsNull()) read_radio(r, radio, t.radio);
   r.read(n, path, "scheme", t.scheme);
   r.read(n, path, "host_template", t.host_template);
   r.read(n, path, "base_port", t.base_port);

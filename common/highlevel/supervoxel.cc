@@ -3,8 +3,15 @@
 #include <limits>
 
 #include "common/core/team_config.h"
+#include "common/highlevel/wire_precision.h"
 
 namespace hexplore::highlevel {
+
+Supervoxel wire_rounded(Supervoxel s) {
+  for (int a = 0; a < 3; ++a) s.center[a] = centre_from_steps(centre_steps(s.center[a]));
+  s.normal = unpack_normal(pack_normal(s.normal));
+  return s;
+}
 
 std::vector<int> species_levels(const core::TeamConfig& team) {
   std::vector<int> levels;

@@ -58,13 +58,10 @@ struct Supervoxel {
   friend bool operator==(const Supervoxel&, const Supervoxel&) = default;
 };
 
-// The supervoxel as it travels on the wire (centre and normal as float). Sources fuse their
-// own contribution in this form too, so every robot fuses bit-identical inputs.
-inline Supervoxel wire_rounded(Supervoxel s) {
-  s.center = s.center.cast<float>().cast<double>();
-  s.normal = s.normal.cast<float>().cast<double>();
-  return s;
-}
+// The supervoxel as it travels on the radio (wire_precision.h: centre on a 1/64 m grid, normal
+// in 16-bit octahedral form). Sources fuse their own contribution in this form too, so every
+// robot fuses bit-identical inputs.
+Supervoxel wire_rounded(Supervoxel s);
 
 // Undirected topology edge key: the two supervoxel keys ordered so that a < b.
 struct EdgeKey {

@@ -16,6 +16,19 @@ Path Fragment::path() const {
   return out;
 }
 
+double Fragment::distance_to(const Eigen::Vector3d& p) const {
+  double d = distance_xy(p, position_m);
+  for (size_t i = 0; i + 1 < trail_m.size(); ++i) {
+    // Distance to the segment, horizontally.
+    const Eigen::Vector2d a = trail_m[i].head<2>(), b = trail_m[i + 1].head<2>(), q = p.head<2>();
+    const Eigen::Vector2d ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double t = len2 > 1e-18 ? std::clamp((q - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    d = std::min(d, (a + t * ab - q).norm());
+  }
+  return d;
+}
+
 double body_radius_of(const Eigen::Vector3d& half_extents_m) { return half_extents_m.head<2>().norm(); }
 
 void body_box_any_yaw(const Eigen::Vector3d& p, const Eigen::Vector3d& half_extents_m, Eigen::Vector3d& box_min,

@@ -19,11 +19,17 @@ struct Fragment {
   Eigen::Vector3d box_min_m = Eigen::Vector3d::Zero();  // body bounding box, world frame
   Eigen::Vector3d box_max_m = Eigen::Vector3d::Zero();
   std::string yielding_to;         // robot it waits for, "" when not yielding
+  // A fragment advanced by its age (advance_fragment): where the robot was reported, up to
+  // position_m. It may still be anywhere on it (stopped since, and that news lost), so the
+  // resolver's last line of defence keeps its distance from all of it. Empty when fresh.
+  Path trail_m;
 
   // Horizontal radius of the body as seen by others: half the larger side of the box.
   double body_radius_m() const;
   // position followed by the waypoints (deduplicated), the path teammates check against.
   Path path() const;
+  // Horizontal distance from `p` to the body's possible centres: position_m and the trail.
+  double distance_to(const Eigen::Vector3d& p) const;
 };
 
 // Axis-aligned box that contains a body of the given half extents at any yaw, centred on p.

@@ -277,21 +277,56 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
   }
   conflicting_ = std::move(conflicting_now);
 
-  // Last line of defence against inconsistent views: never close in on a moving teammate's
-  // body beyond the hard distance (or beyond the current distance when already inside it).
-  const auto samples = sample_path(candidate, options_.sample_step_m * 0.5);
-  for (const Fragment* p : peers) {
-    if (p->stationary) continue;
-    const double hard = radius_m_ + p->body_radius_m() + options_.hard_margin_m +
-                        (speed_mps + p->speed_mps) * options_.cycle_s;
-    const double threshold = std::min(hard, distance_xy(position, p->position_m) - 1e-3);
-    for (size_t i = 1; i < samples.size() && samples[i - 1].s_m < limit_s; ++i) {
-      if (distance_xy(samples[i].point, p->position_m) < threshold) {
-        if (samples[i - 1].s_m < limit_s) {
-          limit_s = samples[i - 1].s_m;
-          limit_reason = "too close to " + p->robot_id;
+  // Last line of defence against inconsistent views: never close in on a teammate's body
+  // beyond the hard distance (or beyond the current distance when already inside it). A
+  // teammate known only from an older fragment may be anywhere on its trail. Stopped teammates
+  // too: their box is shrunk when the robot starts inside it (detours, making room), and a
+  // box's corners lie farther from the body than its faces, so sliding along the shrunk face
+  // could still reach the body. Returns the stopped teammate that cut the path, if one did.
+  auto hold_off = [&](const Path& path, double& limit, std::string& why) -> const Fragment* {
+    const Fragment* stopped_by = nullptr;
+    const auto samples = sample_path(path, options_.sample_step_m * 0.5);
+    for (const Fragment* p : peers) {
+      const double hard = radius_m_ + p->body_radius_m() + options_.hard_margin_m +
+                          (p->stationary ? 0.0 : (speed_mps + p->speed_mps) * options_.cycle_s);
+      const double threshold = std::min(hard, p->distance_to(position) - 1e-3);
+      for (size_t i = 1; i < samples.size() && samples[i - 1].s_m < limit; ++i) {
+        if (p->distance_to(samples[i].point) < threshold) {
+          limit = samples[i - 1].s_m;
+          why = "too close to " + p->robot_id;
+          stopped_by = p->stationary ? p : nullptr;
+          break;
         }
-        break;
+      }
+    }
+    return stopped_by;
+  };
+  const double limit_before = limit_s;
+  const Fragment* held_by = hold_off(candidate, limit_s, limit_reason);
+  if (held_by != nullptr && limit_s < options_.min_move_m) {
+    // Held off inside a stopped teammate's box, so the detour cannot go round it: step out of
+    // the box straight away from its body first; the next decisions go round it.
+    const Eigen::Vector2d lo = held_by->box_min_m.head<2>().array() - (radius_m_ + options_.obstacle_margin_m);
+    const Eigen::Vector2d hi = held_by->box_max_m.head<2>().array() + (radius_m_ + options_.obstacle_margin_m);
+    Eigen::Vector2d away = (position - held_by->position_m).head<2>();
+    if (away.norm() < 1e-6) away = Eigen::Vector2d::UnitX();
+    away.normalize();
+    double exit_t = kInf;
+    for (int a = 0; a < 2; ++a) {
+      if (std::abs(away[a]) < 1e-9) continue;
+      const double bound = away[a] > 0 ? hi[a] : lo[a];
+      exit_t = std::min(exit_t, (bound - position[a]) / away[a]);
+    }
+    if (std::isfinite(exit_t) && exit_t > 0.0) {
+      const double out = exit_t + options_.detour_clearance_m;
+      const Path step_out{position, position + Eigen::Vector3d(away.x() * out, away.y() * out, 0.0)};
+      double step_limit = limit_before;
+      std::string step_reason;
+      hold_off(step_out, step_limit, step_reason);
+      if (!std::isfinite(step_limit) || step_limit >= options_.min_move_m) {
+        candidate = step_out;
+        limit_s = step_limit;
+        limit_reason = step_reason.empty() ? "stepping out of " + held_by->robot_id + "'s way" : step_reason;
       }
     }
   }

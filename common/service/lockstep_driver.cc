@@ -14,7 +14,8 @@ namespace {
 constexpr int kSettleRounds = 3;
 }  // namespace
 
-LockstepDriver::LockstepDriver(std::vector<LockstepWorker*> workers) : workers_(std::move(workers)) {}
+LockstepDriver::LockstepDriver(std::vector<LockstepWorker*> workers, std::function<void()> after_step)
+    : workers_(std::move(workers)), after_step_(std::move(after_step)) {}
 
 LockstepDriver::~LockstepDriver() {
   stop();
@@ -149,6 +150,7 @@ void LockstepDriver::drive() {
         ++rounds;
       }
       if (should_stop()) break;
+      if (after_step_) after_step_();
       std::optional<int64_t> next;
       for (const LockstepWorker* w : workers_)
         if (auto due = w->next_due_ns(); due && (!next || *due < *next)) next = due;

@@ -42,8 +42,9 @@ class LockstepWorker {
 
 class LockstepDriver {
  public:
-  // `workers` must outlive the driver.
-  explicit LockstepDriver(std::vector<LockstepWorker*> workers);
+  // `workers` must outlive the driver. `after_step` (optional) runs on the driver thread after
+  // every step, while no worker runs (the radio model schedules the step's messages there).
+  explicit LockstepDriver(std::vector<LockstepWorker*> workers, std::function<void()> after_step = {});
   ~LockstepDriver();
   LockstepDriver(const LockstepDriver&) = delete;
   LockstepDriver& operator=(const LockstepDriver&) = delete;
@@ -70,6 +71,7 @@ class LockstepDriver {
   bool should_stop() const;
 
   std::vector<LockstepWorker*> workers_;
+  std::function<void()> after_step_;
   std::vector<std::thread> threads_;
   std::thread driver_;
 

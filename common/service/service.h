@@ -48,6 +48,11 @@ class Service {
 
 using ServiceFactory = std::function<std::unique_ptr<Service>()>;
 
+// Socket options that read and write the team's radio traffic as its services do: the team's
+// limits, its roster and its team codecs (no radio model). For tools and test harnesses that
+// talk to a team's services from outside a ServiceHost.
+transport::SocketOptions team_socket_options(const core::TeamConfig& team);
+
 // Per-service view of the host: everything setup() needs. Sockets made here are owned by the
 // context, registered with the loop, and live until the service shuts down. Use from the
 // service's loop thread only.
@@ -66,7 +71,11 @@ class ServiceContext {
   transport::Context& transport() { return *transport_; }
   transport::EventLoop& loop() { return loop_; }
   metrics::Registry& metrics() { return *metrics_; }
+  // The team's limits and wire context (roster, team codecs, radio), for this service's sockets.
   transport::SocketOptions socket_options() const;
+  // The radio model when the team file sets one (transport.radio), else nullptr. The sim
+  // reports its robot's true position to it (positions()) for the range check.
+  transport::RadioMedium* radio() const { return wire_->radio.get(); }
   // Accounting of all of this service's sockets (labels robot and service).
   transport::Accounting& accounting() { return accounting_; }
 
@@ -95,9 +104,15 @@ class ServiceContext {
 
  private:
   friend class ServiceHost;
+  // What every socket of a team shares: built once per process by the ServiceHost.
+  struct TeamWire {
+    std::shared_ptr<const transport::Roster> roster;
+    std::shared_ptr<const transport::CodecTable> codecs;
+    std::shared_ptr<transport::RadioMedium> radio;
+  };
   ServiceContext(const core::TeamConfig& team, const std::string& robot_id, core::ServiceKind kind,
                  transport::Context& transport, metrics::Registry& metrics, const metrics::TransportFamilies& families,
-                 const std::map<std::string, std::string>& arguments);
+                 const std::map<std::string, std::string>& arguments, const TeamWire& wire);
   void publish_status(Service& service);
   void close_sockets();
 
@@ -107,6 +122,7 @@ class ServiceContext {
   transport::Context* transport_;
   metrics::Registry* metrics_;
   const std::map<std::string, std::string>* arguments_;
+  const TeamWire* wire_;
   transport::Accounting accounting_;
   transport::EventLoop loop_;
   std::unique_ptr<transport::Publisher> publisher_;
@@ -164,6 +180,8 @@ class ServiceHost {
 
   const core::TeamConfig& team() const { return team_; }
   transport::Context& transport() { return transport_; }
+  // team_socket_options() of the hosted team (its sockets also carry the radio model).
+  transport::SocketOptions socket_options() const;
   metrics::Registry& metrics();
   // Bound metrics port, 0 when off.
   int metrics_port() const { return metrics_port_; }
@@ -178,6 +196,8 @@ class ServiceHost {
   void finish_entry(Entry& entry);
   void start_threads();
   void start_lockstep();
+  // Range only where every robot is simulated; logs what the radio model applies here.
+  void configure_radio();
   // First member, so it is destroyed last: zmq_ctx_term waits for every socket to close.
   transport::Context transport_;
   core::TeamConfig team_;
@@ -188,6 +208,7 @@ class ServiceHost {
   std::vector<std::unique_ptr<Entry>> entries_;
   std::vector<std::unique_ptr<LockstepEntry>> lockstep_entries_;
   std::unique_ptr<LockstepDriver> lockstep_;
+  ServiceContext::TeamWire wire_;
 };
 
 // main() of a single-service process:

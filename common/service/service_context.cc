@@ -1,19 +1,28 @@
 #include "common/core/clock.h"
 #include "common/core/log.h"
+#include "common/radio/team_codecs.h"
 #include "common/service/service.h"
 #include "common/transport/topics.h"
 
 namespace hexplore::service {
 
+transport::SocketOptions team_socket_options(const core::TeamConfig& team) {
+  transport::SocketOptions options = transport::SocketOptions::from_config(team.transport);
+  options.roster = transport::Roster::from_team(team);
+  options.codecs = radio::team_codecs(team);
+  return options;
+}
+
 ServiceContext::ServiceContext(const core::TeamConfig& team, const std::string& robot_id, core::ServiceKind kind,
                                transport::Context& transport, metrics::Registry& metrics,
                                const metrics::TransportFamilies& families,
-                               const std::map<std::string, std::string>& arguments)
+                               const std::map<std::string, std::string>& arguments, const TeamWire& wire)
     : team_(&team),
       kind_(kind),
       transport_(&transport),
       metrics_(&metrics),
       arguments_(&arguments),
+      wire_(&wire),
       accounting_(robot_id, std::string(core::service_name(kind)), &families),
       start_ns_(core::monotonic_ns()) {
   identity_.robot_id = robot_id;
@@ -28,7 +37,12 @@ const core::SpeciesConfig* ServiceContext::species() const {
 }
 
 transport::SocketOptions ServiceContext::socket_options() const {
-  return transport::SocketOptions::from_config(team_->transport);
+  transport::SocketOptions options = transport::SocketOptions::from_config(team_->transport);
+  options.roster = wire_->roster;
+  options.codecs = wire_->codecs;
+  options.radio = wire_->radio;
+  options.receiver_robot = identity_.robot_id;
+  return options;
 }
 
 transport::Responder& ServiceContext::responder() {
@@ -84,6 +98,17 @@ void ServiceContext::publish_status(Service& service) {
   status.set_detail(detail_);
   status.set_uptime_s(uptime_s());
   service.fill_status(status);
+  if (wire_->radio) {
+    // What the radio model cost this service's sockets, for the experiment record.
+    auto add = [&](const char* name, transport::DropReason reason) {
+      auto* v = status.add_values();
+      v->set_name(name);
+      v->set_value(static_cast<double>(accounting_.dropped(reason)));
+    };
+    add("radio_expired", transport::DropReason::kRadioExpired);
+    add("radio_lost", transport::DropReason::kRadioLost);
+    add("radio_out_of_range", transport::DropReason::kRadioOutOfRange);
+  }
   publisher_->publish(transport::topics::status(identity_.robot_id), status);
 }
 

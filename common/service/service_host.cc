@@ -1,4 +1,5 @@
 #include <atomic>
+#include <set>
 #include <future>
 #include <thread>
 
@@ -40,6 +41,12 @@ ServiceHost::ServiceHost(core::TeamConfig team, HostOptions options)
   auto registry = std::make_unique<metrics::PrometheusRegistry>();
   registry_ = std::move(registry);
   families_ = metrics::TransportFamilies::create(*registry_);
+  const transport::SocketOptions team_options = team_socket_options(team_);
+  wire_.roster = team_options.roster;
+  wire_.codecs = team_options.codecs;
+  if (team_.transport.radio.active())
+    wire_.radio = std::make_shared<transport::RadioMedium>(team_.transport.radio, wire_.roster, team_.params.seed,
+                                                           options_.lockstep);
 }
 
 ServiceHost::~ServiceHost() {
@@ -52,6 +59,13 @@ ServiceHost::~ServiceHost() {
 
 metrics::Registry& ServiceHost::metrics() { return *registry_; }
 
+transport::SocketOptions ServiceHost::socket_options() const {
+  transport::SocketOptions options = transport::SocketOptions::from_config(team_.transport);
+  options.roster = wire_.roster;
+  options.codecs = wire_.codecs;
+  return options;
+}
+
 void ServiceHost::add(std::unique_ptr<Service> service, const std::string& robot_id) {
   if (robot_id != core::kStationId && team_.find_robot(robot_id) == nullptr)
     throw core::ConfigError(team_.source_file, "robots",
@@ -60,7 +74,7 @@ void ServiceHost::add(std::unique_ptr<Service> service, const std::string& robot
   const core::ServiceKind kind = service->kind();
   entry->service = std::move(service);
   entry->context = std::unique_ptr<ServiceContext>(
-      new ServiceContext(team_, robot_id, kind, transport_, *registry_, families_, options_.arguments));
+      new ServiceContext(team_, robot_id, kind, transport_, *registry_, families_, options_.arguments, wire_));
   entry->process = std::make_unique<metrics::ProcessMetrics>(*registry_, robot_id, std::string(core::service_name(kind)));
   entries_.push_back(std::move(entry));
 }
@@ -142,8 +156,33 @@ void ServiceHost::start() {
     metrics_port_ = prometheus.expose(port < 0 ? 0 : port, options_.metrics_bind_address);
     core::LogLine(core::LogLevel::kInfo, "service") << "serving /metrics on port " << metrics_port_;
   }
+  if (wire_.radio) configure_radio();
   if (options_.lockstep) start_lockstep();
   else start_threads();
+}
+
+void ServiceHost::configure_radio() {
+  // The range needs every robot's true position, which only the sims report: model it when
+  // this process simulates the whole team (lockstep, --compose), not in one process of many.
+  std::set<std::string> simulated;
+  for (const auto& entry : entries_)
+    if (entry->context->kind() == core::ServiceKind::kSim) simulated.insert(entry->context->robot_id());
+  const bool whole_team = simulated.size() == team_.robots.size();
+  wire_.radio->enable_range(whole_team);
+  const auto& radio = team_.transport.radio;
+  core::LogLine(core::LogLevel::kInfo, "service")
+      << "radio model: " << (radio.bandwidth_bytes_per_s > 0 ? std::to_string(radio.bandwidth_bytes_per_s) + " B/s" : "unlimited")
+      << " per robot, latency " << radio.latency_s << " s, loss " << radio.loss << ", range "
+      << (radio.range_m > 0 ? std::to_string(radio.range_m) + " m" : "unlimited");
+  if (radio.range_m > 0 && !whole_team)
+    core::log(core::LogLevel::kWarn, "service",
+              "transport.radio.range_m is not modelled here: this process does not simulate every robot");
+  if (radio.bandwidth_bytes_per_s > 0 && entries_.size() > 1 && !whole_team)
+    core::log(core::LogLevel::kInfo, "service", "radio bandwidth is shared by the services of this process only");
+  else if (radio.bandwidth_bytes_per_s > 0 && entries_.size() == 1)
+    core::log(core::LogLevel::kWarn, "service",
+              "transport.radio.bandwidth_bytes_per_s applies to this one service: a robot's services in separate "
+              "processes cannot share one transmitter");
 }
 
 void ServiceHost::start_lockstep() {
@@ -152,7 +191,10 @@ void ServiceHost::start_lockstep() {
     lockstep_entries_.push_back(std::make_unique<LockstepEntry>(*this, *entry));
     workers.push_back(lockstep_entries_.back().get());
   }
-  lockstep_ = std::make_unique<LockstepDriver>(std::move(workers));
+  // The radio schedules what a step's services sent once the step is over, in a fixed order.
+  std::function<void()> after_step;
+  if (wire_.radio) after_step = [radio = wire_.radio] { radio->commit(); };
+  lockstep_ = std::make_unique<LockstepDriver>(std::move(workers), std::move(after_step));
   lockstep_->start();  // rethrows a setup's exception after everything closed
   core::LogLine(core::LogLevel::kInfo, "service") << "lockstep: " << entries_.size()
                                                    << " services step together on sim time";

@@ -2,6 +2,19 @@
 
 namespace hexplore::station {
 
+double RobotTrack::counter(const std::string& key) const {
+  auto it = counters.find(key);
+  return it == counters.end() ? 0.0 : it->second;
+}
+
+double RobotTrack::counter_sum(const std::string& value) const {
+  double sum = 0.0;
+  const std::string suffix = "." + value;
+  for (const auto& [key, v] : counters)
+    if (key.size() > suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0) sum += v;
+  return sum;
+}
+
 double ExperimentRecord::accumulated_completeness() const {
   if (completeness.empty()) return 0.0;
   double sum = 0.0;

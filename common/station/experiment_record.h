@@ -27,6 +27,13 @@ struct RobotTrack {
   double length_m = 0.0;
   uint32_t collisions = 0;
   std::string last_state;
+  // Status counters since the start, "service.value" (station::status_counters()); radio
+  // drops per reporting service ("hlmap.radio_lost", ...).
+  std::map<std::string, double> counters;
+
+  // Sum of the counters named `value` over every service ("radio_lost").
+  double counter_sum(const std::string& value) const;
+  double counter(const std::string& key) const;
 };
 
 // The communication categories the paper reports; bytes on the matching team topic.
@@ -58,8 +65,9 @@ struct ExperimentRecord {
   std::vector<CompletenessSample> completeness;
   std::map<std::string, RobotTrack> robots;
   std::map<std::string, std::vector<double>> planning_times_s;  // per robot, one per round
-  // robot -> category -> bytes sent on the team topic of that category.
+  // robot -> category -> bytes (and messages) sent on the team topic of that category.
   std::map<std::string, std::map<std::string, uint64_t>> team_bytes;
+  std::map<std::string, std::map<std::string, uint64_t>> team_messages;
   double exploration_time_s = 0.0;
   std::string end_reason;  // "no task views remain", "time limit", "stopped", ...
   double wall_time_s = 0.0;

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "common/station/charts.h"
+#include "common/station/communication_report.h"
 
 namespace hexplore::station {
 namespace {
@@ -109,6 +110,7 @@ std::string summary_json(const ExperimentRecord& r) {
     << number(planning.empty() ? 0.0 : *std::max_element(planning.begin(), planning.end()))
     << ", \"rounds\": " << planning.size() << "},\n";
   j << "  \"team_kb_per_s\": " << number(static_cast<double>(team_bytes_total(r)) / 1024.0 / duration) << ",\n";
+  j << "  \"map_transmission\": " << map_transmission_json(r) << ",\n";
   j << "  \"open_targets\": " << open_targets_json(r) << ",\n";
   j << "  \"robots\": {";
   bool first = true;
@@ -128,7 +130,7 @@ std::string summary_json(const ExperimentRecord& r) {
       j << (first_category ? "" : ", ") << quoted(category) << ": " << number(static_cast<double>(bytes) / 1024.0);
       first_category = false;
     }
-    j << "}}";
+    j << "}, " << robot_communication_json(r, id) << "}";
     first = false;
   }
   j << "\n  }\n}\n";
@@ -164,16 +166,8 @@ std::vector<std::string> write_results(const ExperimentRecord& r, const std::str
         << number(track.positions_m[i].z()) << "\n";
   write_text(root / "trajectories.csv", t.str(), written);
 
-  const double duration = std::max(r.exploration_time_s, 1e-9);
-  std::ostringstream m;
-  m << "robot,category,cumulative_kb,average_kb_per_s\n";
-  for (const auto& [id, categories] : r.team_bytes)
-    for (const auto& category : communication_categories()) {
-      const auto it = categories.find(category);
-      const double kb = it == categories.end() ? 0.0 : static_cast<double>(it->second) / 1024.0;
-      m << id << "," << category << "," << number(kb) << "," << number(kb / duration) << "\n";
-    }
-  write_text(root / "communication.csv", m.str(), written);
+  write_text(root / "communication.csv", communication_csv(r), written);
+  write_text(root / "map_transmission.csv", map_transmission_csv(r), written);
 
   std::ostringstream p;
   p << "robot,round,planning_time_s\n";
@@ -198,7 +192,29 @@ std::vector<std::string> write_results(const ExperimentRecord& r, const std::str
 
 std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs) {
   std::vector<double> time, completeness, observable, accumulated, length, planning, kbps, wall;
+  // Per robot, as the paper reports them: each category's rate, the three map strategies,
+  // and the map re-sync totals of the team.
+  std::map<std::string, std::vector<double>> category_rate, strategy_rate;
+  std::vector<double> gaps_detected, gaps_repaired, collisions;
   for (const auto& r : runs) {
+    const double duration = std::max(r.exploration_time_s, 1e-9);
+    const double robots = std::max<size_t>(1, r.robots.size());
+    for (const auto& category : communication_categories()) {
+      uint64_t bytes = 0;
+      for (const auto& [_, categories] : r.team_bytes)
+        if (auto c = categories.find(category); c != categories.end()) bytes += c->second;
+      category_rate[category].push_back(static_cast<double>(bytes) / 1024.0 / robots / duration);
+    }
+    for (const auto& v : map_strategies(r)) strategy_rate[v.strategy].push_back(v.kb_per_s);
+    double detected = 0.0, repaired = 0.0, contacts = 0.0;
+    for (const auto& [_, track] : r.robots) {
+      detected += track.counter("hlmap.gaps_detected");
+      repaired += track.counter("hlmap.gaps_repaired");
+      contacts += track.collisions;
+    }
+    gaps_detected.push_back(detected);
+    gaps_repaired.push_back(repaired);
+    collisions.push_back(contacts);
     time.push_back(r.exploration_time_s);
     completeness.push_back(r.final_team_completeness());
     observable.push_back(r.completeness.empty() ? 0.0 : r.completeness.back().team_observable);
@@ -231,7 +247,15 @@ std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs) {
     << stat("final_observable_completeness", observable, false)
     << stat("accumulated_completeness", accumulated, false) << stat("total_trajectory_length_m", length, false)
     << stat("mean_planning_time_s", planning, false) << stat("team_kb_per_s", kbps, false)
-    << stat("wall_time_s", wall, true);
+    << stat("collisions", collisions, false) << stat("map_gaps_detected", gaps_detected, false)
+    << stat("map_gaps_repaired", gaps_repaired, false);
+  j << "  \"robot_kb_per_s_by_category\": {\n";
+  for (const auto& category : communication_categories())
+    j << "  " << stat(category.c_str(), category_rate[category], category == communication_categories().back());
+  j << "  },\n  \"map_transmission_kb_per_s\": {\n";
+  for (const char* name : {"incremental_high_level", "full_high_level", "full_perception"})
+    j << "  " << stat(name, strategy_rate[name], std::string(name) == "full_perception");
+  j << "  },\n" << stat("wall_time_s", wall, true);
   j << "}\n";
   return j.str();
 }

@@ -18,6 +18,14 @@ std::optional<double> status_value(const v1::ServiceStatus& status, std::string_
 
 }  // namespace
 
+const std::vector<std::string>& status_counters() {
+  static const std::vector<std::string> kCounters = {
+      "sim.odometry_m",          "sim.collisions",          "hlmap.gaps_detected",   "hlmap.gaps_repaired",
+      "hlmap.repair_requests",   "hlmap.snapshots_applied", "hlmap.full_map_bytes",  "mapping.raw_map_bytes",
+      "*.radio_expired",         "*.radio_lost",            "*.radio_out_of_range"};
+  return kCounters;
+}
+
 std::optional<std::string> communication_category(std::string_view topic) {
   if (topic == "team/pose") return "pose";
   if (topic == "team/map") return "incremental_map";
@@ -41,9 +49,14 @@ void TeamRecorder::start(double sim_time_s) {
     track.positions_m.clear();
     track.length_m = 0.0;
   }
-  start_odometry_m_.clear();
   chord_length_m_.clear();
+  for (auto& [robot, counters] : counters_)
+    for (auto& [key, c] : counters) {
+      c.at_start = c.seen ? c.latest : 0.0;
+      record_.robots[robot].counters[key] = 0.0;
+    }
   for (auto& [_, categories] : record_.team_bytes) categories.clear();
+  for (auto& [_, categories] : record_.team_messages) categories.clear();
   record_.completeness.clear();
   record_.planning_times_s.clear();
 }
@@ -57,15 +70,11 @@ bool TeamRecorder::on_pose(const std::string& robot, double sim_time_s, const v1
   if (it == record_.robots.end()) return false;
   latest_sim_time_s_ = std::max(latest_sim_time_s_, sim_time_s);
   auto& track = it->second;
-  track.collisions = pose.collisions();
   track.last_state = v1::MotionState_Name(pose.state());
   if (!start_s_) return true;
   const Eigen::Vector3d p(pose.pose().position_m().x(), pose.pose().position_m().y(), pose.pose().position_m().z());
   if (!p.allFinite()) return false;
   const double t = sim_time_s - *start_s_;
-  // The sim integrates odometry every motion step; the chord sum of sampled poses is the
-  // fallback for drivers that do not report it.
-  const double start_odometry = start_odometry_m_.try_emplace(robot, pose.odometry_m()).first->second;
   if (track.positions_m.empty()) {
     track.positions_m.push_back(p);
     track.times_s.push_back(t);
@@ -77,13 +86,42 @@ bool TeamRecorder::on_pose(const std::string& robot, double sim_time_s, const v1
     track.positions_m.push_back(p);
     track.times_s.push_back(t);
   }
-  track.length_m = pose.odometry_m() > 0.0 ? pose.odometry_m() - start_odometry : chord_length_m_[robot];
+  // The sim integrates odometry every motion step (its status); the chord sum of the poses
+  // heard is the fallback for drivers that do not report it.
+  if (!counters_[robot]["sim.odometry_m"].seen) track.length_m = chord_length_m_[robot];
   return true;
 }
 
 void TeamRecorder::on_team_message(const std::string& robot, std::string_view topic, size_t bytes) {
   if (!start_s_ || !record_.robots.contains(robot)) return;
-  if (const auto category = communication_category(topic)) record_.team_bytes[robot][*category] += bytes;
+  if (const auto category = communication_category(topic)) {
+    record_.team_bytes[robot][*category] += bytes;
+    ++record_.team_messages[robot][*category];
+  }
+}
+
+void TeamRecorder::on_status(const std::string& robot, std::string_view service, const v1::ServiceStatus& status) {
+  auto track = record_.robots.find(robot);
+  if (track == record_.robots.end()) return;
+  const auto& known = status_counters();
+  auto kept = [&](const std::string& key, const std::string& value) {
+    // "*.value": any service's (the radio drops each service counts for its own sockets).
+    return std::find(known.begin(), known.end(), key) != known.end() ||
+           std::find(known.begin(), known.end(), "*." + value) != known.end();
+  };
+  for (const auto& v : status.values()) {
+    const std::string key = std::string(service) + "." + v.name();
+    if (!kept(key, v.name())) continue;
+    Counter& c = counters_[robot][key];
+    c.latest = v.value();
+    c.seen = true;
+    if (!start_s_) continue;
+    track->second.counters[key] = c.latest - c.at_start;
+  }
+  const auto& counters = track->second.counters;
+  if (auto odometry = counters.find("sim.odometry_m"); odometry != counters.end()) track->second.length_m = odometry->second;
+  if (auto collisions = counters_[robot].find("sim.collisions"); collisions != counters_[robot].end())
+    track->second.collisions = static_cast<uint32_t>(collisions->second.latest);
 }
 
 int TeamRecorder::on_planning_status(const std::string& robot, const v1::ServiceStatus& status) {

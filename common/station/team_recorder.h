@@ -1,12 +1,15 @@
 #pragma once
-// Turns what the station hears on the team topics into an ExperimentRecord: trajectories from
-// team/pose, communication volume per category from the size of every team message, planning
-// rounds from the planners' statuses. Pure bookkeeping; the station service feeds it.
+// Turns what the station hears into an ExperimentRecord: trajectories from team/pose,
+// communication volume per category from the size of every team message, planning rounds from
+// the planners' statuses, and the counters the services report in their statuses (odometry and
+// collisions, map sync, what the other map strategies would have sent, radio drops) as
+// increases since the start. Pure bookkeeping; the station service feeds it.
 
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "common/core/team_config.h"
 #include "common/station/experiment_record.h"
@@ -40,6 +43,8 @@ class TeamRecorder {
   void on_team_message(const std::string& robot, std::string_view topic, size_t bytes);
   // A planning status; records the planning time of each new round. Returns views remaining (-1 unknown).
   int on_planning_status(const std::string& robot, const v1::ServiceStatus& status);
+  // Any service's status: keeps the status counters (status_counters()) of `service`.
+  void on_status(const std::string& robot, std::string_view service, const v1::ServiceStatus& status);
   void on_completeness(CompletenessSample sample);
 
   ExperimentRecord& record() { return record_; }
@@ -50,9 +55,18 @@ class TeamRecorder {
   ExperimentRecord record_;
   std::optional<double> start_s_;
   double latest_sim_time_s_ = 0.0;
+  struct Counter {
+    double at_start = 0.0;
+    double latest = 0.0;
+    bool seen = false;
+  };
   std::map<std::string, double> last_round_;
-  std::map<std::string, double> start_odometry_m_;
   std::map<std::string, double> chord_length_m_;
+  std::map<std::string, std::map<std::string, Counter>> counters_;  // robot -> "service.value"
 };
+
+// The status values the record keeps per robot, as "service.value" (ExperimentRecord:
+// RobotTrack::counters). Every service may report the radio drops.
+const std::vector<std::string>& status_counters();
 
 }  // namespace hexplore::station

@@ -8,7 +8,8 @@ namespace hexplore::transport {
 
 std::string_view drop_reason_name(DropReason reason) {
   static constexpr std::array<std::string_view, kDropReasonCount> kNames = {
-      "malformed", "wrong_version", "wrong_type", "oversize", "fault_injected", "timeout", "send_failed", "handler_error"};
+      "malformed",    "wrong_version", "wrong_type",    "oversize",   "fault_injected",    "timeout",
+      "send_failed",  "handler_error", "radio_expired", "radio_lost", "radio_out_of_range"};
   return kNames[static_cast<size_t>(reason)];
 }
 
@@ -66,6 +67,7 @@ void Accounting::record_received(std::string_view topic, std::string_view peer, 
     l.messages->increment();
     l.bytes->increment(static_cast<double>(bytes));
   }
+  if (latency_ns < 0) return;  // no send time to measure against (radio messages)
   auto it = latency_.find(topic);
   const std::string_view label = it == latency_.end() ? topics::topic_label(topic) : topic;
   if (it == latency_.end()) it = latency_.find(label);
@@ -76,7 +78,7 @@ void Accounting::record_received(std::string_view topic, std::string_view peer, 
     it = latency_.emplace(std::string(label), fresh).first;
   }
   ++it->second.latency_samples;
-  if (it->second.latency != nullptr) it->second.latency->observe(static_cast<double>(latency_ns < 0 ? 0 : latency_ns) * 1e-9);
+  if (it->second.latency != nullptr) it->second.latency->observe(static_cast<double>(latency_ns) * 1e-9);
 }
 
 void Accounting::record_dropped(std::string_view topic, DropReason reason) {

@@ -24,8 +24,12 @@ enum class DropReason {
   kTimeout = 5,        // a request got no reply in time
   kSendFailed = 6,     // ZeroMQ refused the message (would block at the high-water mark)
   kHandlerError = 7,   // the receiving handler threw; the message is counted as lost
+  // The radio model (link_model.h):
+  kRadioExpired = 8,     // waited longer than max_queue_age_s for the sender's channel
+  kRadioLost = 9,        // lost on the way to this receiver
+  kRadioOutOfRange = 10, // sender and receiver were farther apart than the range
 };
-inline constexpr int kDropReasonCount = 8;
+inline constexpr int kDropReasonCount = 11;
 std::string_view drop_reason_name(DropReason reason);
 
 // Peer label used for messages sent on a PUB socket (every subscriber gets them).
@@ -42,6 +46,7 @@ class Accounting {
   Accounting(std::string robot_id, std::string service, const metrics::TransportFamilies* families = nullptr);
 
   void record_sent(std::string_view topic, std::string_view peer, size_t bytes);
+  // `latency_ns` < 0: the message carried no send time, so no latency sample.
   void record_received(std::string_view topic, std::string_view peer, size_t bytes, int64_t latency_ns);
   void record_dropped(std::string_view topic, DropReason reason);
 

@@ -11,6 +11,7 @@
 
 #include "common/core/clock.h"
 #include "common/core/log.h"
+#include "common/transport/envelope.h"
 #include "common/transport/socket_util.h"
 #include "hexplore/v1/header.pb.h"
 
@@ -164,16 +165,14 @@ void EventLoop::enter_lockstep() { clock_.make_virtual(0); }
 
 size_t EventLoop::collect() {
   size_t taken = 0;
-  v1::Header header;
   for (size_t i = 0; i < sockets_.size(); ++i) {
     zmq::socket_t* socket = sockets_[i]->input_socket();
     if (socket == nullptr) continue;
     const int at = sockets_[i]->header_frame();
     Held held{i, {}, sockets_[i], {}};
     while (detail::receive_frames(*socket, held.frames, "lockstep")) {
-      if (at >= 0 && static_cast<size_t>(at) < held.frames.size() &&
-          header.ParseFromArray(held.frames[at].data(), static_cast<int>(held.frames[at].size())))
-        held.sender = header.robot_id() + "/" + header.service();
+      if (at >= 0 && static_cast<size_t>(at) < held.frames.size())
+        held.sender = std::string(header_sender_key(held.frames[at].data(), held.frames[at].size()));
       held_.push_back(std::move(held));
       held = Held{i, {}, sockets_[i], {}};
       ++taken;

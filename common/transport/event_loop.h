@@ -89,7 +89,7 @@ class EventLoop {
   // A message taken off a socket by collect(), waiting for dispatch().
   struct Held {
     size_t socket_index;  // position in sockets_ at collect time
-    std::string sender;   // "robot/service" from the Header; "" when unreadable
+    std::string sender;   // the sender bytes of the header (header_sender_key); "" when unreadable
     Pollable* socket;
     std::vector<zmq::message_t> frames;
   };

@@ -1,10 +1,14 @@
 #pragma once
-// Typed publisher on a PUB socket: publish(topic, message) sends [topic][Header][payload] with
-// the Header filled (identity, per-topic sequence from 1, wall send time, sim time, schema
-// version, payload type). Not thread-safe: use it from one thread at a time (the loop thread).
+// Typed publisher on a PUB socket: publish(topic, message) sends [topic][header][payload] with
+// the compact header filled (identity, per-topic sequence from 1, sim time, schema version,
+// payload type; wall send time on robot-local topics). Team topics travel under their wire
+// codes, with compact payloads (SocketOptions::codecs) and compression, and through the radio
+// model when the socket has one. Not thread-safe: use it from one thread at a time (the loop
+// thread).
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
@@ -38,7 +42,8 @@ class Publisher : public Pollable {
   void bind(const std::string& endpoint);
 
   // Returns false when the message was not sent: invalid topic, oversize, dropped by fault
-  // injection, or refused by ZeroMQ. A delayed message returns true (it is queued).
+  // injection, or refused by ZeroMQ. A delayed message returns true (it is queued), and so
+  // does one handed to the radio (which may still expire it, counted as radio_expired).
   template <typename M>
   bool publish(std::string_view topic, const M& message, int64_t sim_time_ns = 0) {
     return publish_message(topic, type_name<M>(), message, sim_time_ns);
@@ -73,6 +78,10 @@ class Publisher : public Pollable {
     zmq::message_t payload;
   };
   bool send_frames(std::string_view topic, zmq::message_t& header, zmq::message_t& payload);
+  // Queues a message for `due_ns`, keeping the queue in due order.
+  void delay(Delayed d);
+  // Hands a team message to the radio, which schedules (or expires) it.
+  void submit_to_radio(Delayed d);
 
   // Lets the sequence map be searched with a string_view (no allocation per publish).
   struct TopicHash {
@@ -89,6 +98,10 @@ class Publisher : public Pollable {
   v1::Header header_;  // identity fields set once; per-message fields overwritten on each publish
   std::deque<Delayed> delayed_;
   std::mt19937_64 rng_;
+  std::string payload_buffer_;
+  std::string header_buffer_;
+  std::optional<uint32_t> radio_slot_;  // this robot's slot when its team messages go on the radio
+  uint64_t radio_order_ = 0;
 };
 
 }  // namespace hexplore::transport

@@ -5,8 +5,10 @@
 #include <zmq_addon.hpp>
 
 #include "common/core/clock.h"
+#include "common/core/endpoints.h"
 #include "common/core/log.h"
 #include "common/transport/socket_util.h"
+#include "common/transport/topics.h"
 
 namespace hexplore::transport {
 
@@ -26,6 +28,13 @@ size_t total_size(const std::vector<zmq::message_t>& frames) {
   return n;
 }
 
+// Whether `other` is another robot of the team than `self` (not the station): a reply to it
+// crosses the radio.
+bool to_teammate(const SocketOptions& options, std::string_view self, std::string_view other) {
+  if (!options.roster || self == other || self == core::kStationId || other == core::kStationId) return false;
+  return options.roster->slot(self).has_value() && options.roster->slot(other).has_value();
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -43,13 +52,24 @@ Responder::Responder(Context& context, Identity identity, const std::string& bin
 Responder::~Responder() { socket_.close(); }
 
 void Responder::add_handler(const std::string& request_type, const std::string& reply_type, Handle handle) {
-  handlers_[request_type] = Handler{reply_type, std::move(handle)};
+  remember_type_name(request_type);
+  remember_type_name(reply_type);
+  handlers_[type_id(request_type)] = Handler{request_type, reply_type, std::move(handle)};
+}
+
+void Responder::ReplyOut::encode(const google::protobuf::MessageLite& reply) {
+  // Payload type ids are of the reply type; encode_payload looks its codec up by it.
+  flags = encode_payload(reply, type_id(reply.GetTypeName()), radio, options, bytes);
 }
 
 void Responder::reply(zmq::message_t& routing_id, const v1::Header& request, std::string_view reply_type,
-                      zmq::message_t payload) {
+                      const ReplyOut* out) {
   v1::Header header = make_header(identity_, request.sequence(), reply_type, request.sim_time_ns());
-  zmq::message_t header_frame = to_frame(header);
+  // A reply to a teammate is radio traffic (roster slot, compact payload); others go by name.
+  const bool radio = out != nullptr && out->radio;
+  zmq::message_t header_frame =
+      transport::header_frame(header, radio ? options_.roster.get() : nullptr, out ? out->flags : 0, true);
+  zmq::message_t payload = out ? zmq::message_t(out->bytes.data(), out->bytes.size()) : zmq::message_t();
   const size_t bytes = header_frame.size() + payload.size();
   try {
     // ROUTER drops replies to peers that are gone or full rather than blocking.
@@ -67,44 +87,48 @@ void Responder::reply(zmq::message_t& routing_id, const v1::Header& request, std
 }
 
 void Responder::handle(std::vector<zmq::message_t>& frames) {
-  v1::Header header;
-  // [routing id][empty][Header][payload]
+  DecodedHeader decoded;
+  const v1::Header& header = decoded.header;
+  // [routing id][empty][header][payload]
   if (frames.size() != 4 || frames[1].size() != 0) {
     drop(accounting_, "request/invalid", DropReason::kMalformed,
          "request with " + std::to_string(frames.size()) + " frames, expected [id][empty][header][payload]");
     return;
   }
-  if (auto reason = check_envelope(frames[2], frames[3], options_.max_message_bytes, header)) {
+  if (auto reason = check_envelope(frames[2], frames[3], options_.max_message_bytes, options_.roster.get(), decoded)) {
     drop(accounting_, "request/invalid", *reason, "request rejected: " + std::string(drop_reason_name(*reason)));
     return;
   }
-  const std::string topic = request_topic(header.payload_type());
-  auto it = handlers_.find(header.payload_type());
-  if (it == handlers_.end()) {
+  auto it = handlers_.find(decoded.type_id);
+  if (it == handlers_.end() || decoded.payload_flags != 0) {
+    // Requests always travel as plain protobuf; anything else is not ours to serve.
     drop(accounting_, "request/unserved", DropReason::kWrongType,
-         "no handler for request type '" + header.payload_type().substr(0, 80) + "'");
-    reply(frames[0], header, "", zmq::message_t());
+         "no handler for request " + type_label(decoded.type_id));
+    reply(frames[0], header, "", nullptr);
     return;
   }
+  decoded.header.set_payload_type(it->second.request_type);
+  const std::string topic = request_topic(header.payload_type());
+  const size_t wire_bytes = total_size(frames) - frames[0].size();
   if (accounting_)
-    accounting_->record_received(topic, header.robot_id(), total_size(frames) - frames[0].size(),
-                                 core::wall_time_ns() - header.send_time_ns());
-  zmq::message_t reply_payload;
+    accounting_->record_received(topic, header.robot_id(), wire_bytes,
+                                 std::max<int64_t>(0, core::wall_time_ns() - header.send_time_ns()));
+  ReplyOut out{options_, to_teammate(options_, identity_.robot_id, header.robot_id()), {}, 0};
   bool parsed = false;
   try {
-    parsed = it->second.handle(header, frames[3].data(), frames[3].size(), reply_payload);
+    parsed = it->second.handle(header, frames[3].to_string_view(), wire_bytes, out);
   } catch (const std::exception& e) {
     core::log_once(core::LogLevel::kError, "transport", "handler-threw:" + header.payload_type(),
                    "handler for " + header.payload_type() + " threw: " + e.what());
-    reply(frames[0], header, "", zmq::message_t());
+    reply(frames[0], header, "", nullptr);
     return;
   }
   if (!parsed) {
     drop(accounting_, topic, DropReason::kMalformed, "request payload does not parse as " + header.payload_type());
-    reply(frames[0], header, "", zmq::message_t());
+    reply(frames[0], header, "", nullptr);
     return;
   }
-  reply(frames[0], header, it->second.reply_type, std::move(reply_payload));
+  reply(frames[0], header, it->second.reply_type, &out);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -131,10 +155,12 @@ void Requester::send_request(std::string_view request_type, const google::protob
   zmq::message_t payload = to_frame(request);
   if (static_cast<int64_t>(payload.size()) > options_.max_message_bytes) {
     drop(accounting_, topic, DropReason::kOversize, "request above max_message_bytes not sent");
-    complete(nullptr, nullptr, 0);
+    complete(nullptr);
     return;
   }
-  zmq::message_t header = to_frame(make_header(identity_, sequence, request_type, 0));
+  remember_type_name(request_type);
+  remember_type_name(reply_type);
+  zmq::message_t header = transport::header_frame(make_header(identity_, sequence, request_type, 0), nullptr);
   const size_t bytes = header.size() + payload.size();
   bool sent = false;
   try {
@@ -150,7 +176,7 @@ void Requester::send_request(std::string_view request_type, const google::protob
   }
   if (!sent) {
     drop(accounting_, topic, DropReason::kSendFailed, "request " + topic + " could not be sent (no peer or queue full)");
-    complete(nullptr, nullptr, 0);
+    complete(nullptr);
     return;
   }
   if (accounting_) accounting_->record_sent(topic, peer_, bytes);
@@ -158,48 +184,65 @@ void Requester::send_request(std::string_view request_type, const google::protob
                                      std::string(reply_type), std::move(complete)});
 }
 
+bool Requester::radio_delivers(const v1::Header& reply, std::string_view topic) {
+  if (!options_.radio || !to_teammate(options_, identity_.robot_id, reply.robot_id())) return true;
+  const Roster& roster = options_.radio->roster();
+  const uint32_t self = *roster.slot(identity_.robot_id);
+  const uint32_t peer = *roster.slot(reply.robot_id());
+  // Both legs: the request out and the reply back.
+  RadioVerdict verdict = options_.radio->receive(self, peer, "request", reply.sequence(), now_ns());
+  if (verdict == RadioVerdict::kDelivered) verdict = options_.radio->receive(peer, self, topic, reply.sequence(), now_ns());
+  if (verdict == RadioVerdict::kDelivered) return true;
+  if (accounting_)
+    accounting_->record_dropped(topic, verdict == RadioVerdict::kLost ? DropReason::kRadioLost : DropReason::kRadioOutOfRange);
+  return false;
+}
+
 void Requester::handle(std::vector<zmq::message_t>& frames) {
-  v1::Header header;
+  DecodedHeader decoded;
+  const v1::Header& header = decoded.header;
   if (frames.size() != 3 || frames[0].size() != 0) {
     drop(accounting_, "request/invalid", DropReason::kMalformed, "reply with wrong frame layout");
     return;
   }
-  auto reason = check_envelope(frames[1], frames[2], options_.max_message_bytes, header);
-  if (reason && *reason != DropReason::kMalformed) {
+  if (auto reason = check_envelope(frames[1], frames[2], options_.max_message_bytes, options_.roster.get(), decoded)) {
     drop(accounting_, "request/invalid", *reason, "reply rejected: " + std::string(drop_reason_name(*reason)));
-    return;
-  }
-  if (reason && header.payload_type().empty() && header.sequence() != 0) {
-    // An empty payload_type is the responder's "not served" answer.
-    auto it = pending_.find(header.sequence());
-    if (it != pending_.end()) {
-      Complete complete = std::move(it->second.complete);
-      pending_.erase(it);
-      complete(nullptr, nullptr, 0);
-    }
-    return;
-  }
-  if (reason) {
-    drop(accounting_, "request/invalid", *reason, "reply with unparsable header");
     return;
   }
   auto it = pending_.find(header.sequence());
   if (it == pending_.end()) return;  // late reply to a request that already timed out
-  const std::string topic = request_topic(header.payload_type());
-  if (header.payload_type() != it->second.reply_type) {
-    drop(accounting_, topic, DropReason::kWrongType, "reply of type '" + header.payload_type().substr(0, 80) +
-                                                         "' instead of " + it->second.reply_type);
+  if (decoded.type_id == 0) {
+    // Type id 0 is the responder's "not served" answer.
     Complete complete = std::move(it->second.complete);
     pending_.erase(it);
-    complete(nullptr, nullptr, 0);
+    complete(nullptr);
     return;
   }
+  const std::string topic = request_topic(it->second.reply_type);
+  if (decoded.type_id != type_id(it->second.reply_type)) {
+    drop(accounting_, topic, DropReason::kWrongType, "reply " + type_label(decoded.type_id) + " instead of " +
+                                                         it->second.reply_type);
+    Complete complete = std::move(it->second.complete);
+    pending_.erase(it);
+    complete(nullptr);
+    return;
+  }
+  // A reply lost on the radio leaves the request to time out, as a real loss would.
+  if (!radio_delivers(header, topic)) return;
+  decoded.header.set_payload_type(it->second.reply_type);
+  std::string_view payload;
+  if (!unpack_payload(frames[2].to_string_view(), decoded.payload_flags, options_, scratch_, payload)) {
+    drop(accounting_, topic, DropReason::kMalformed, "compressed reply is corrupt or too large");
+    return;  // times out
+  }
+  const size_t wire_bytes = frames[1].size() + frames[2].size();
   if (accounting_)
-    accounting_->record_received(topic, header.robot_id(), frames[1].size() + frames[2].size(),
-                                 core::wall_time_ns() - header.send_time_ns());
+    accounting_->record_received(topic, header.robot_id(), wire_bytes,
+                                 std::max<int64_t>(0, core::wall_time_ns() - header.send_time_ns()));
   Complete complete = std::move(it->second.complete);
   pending_.erase(it);
-  if (!complete(&header, frames[2].data(), frames[2].size()))
+  const Reply reply{header, wire_bytes, payload, decoded.payload_flags, decoded.type_id, options_};
+  if (!complete(&reply))
     drop(accounting_, topic, DropReason::kMalformed, "reply payload does not parse as " + header.payload_type());
 }
 
@@ -220,7 +263,7 @@ void Requester::on_deadline(int64_t now_ns) {
     const std::string topic = request_topic(it->second.reply_type);
     it = pending_.erase(it);
     if (accounting_) accounting_->record_dropped(topic, DropReason::kTimeout);
-    complete(nullptr, nullptr, 0);
+    complete(nullptr);
   }
 }
 

@@ -1,7 +1,10 @@
 #pragma once
 // Request/reply over ROUTER (Responder, binds) and DEALER (Requester, connects). Wire:
-// [routing id][empty][Header][payload]; the reply header echoes the request's sequence so
-// replies match requests, and an empty payload_type in a reply means "not served".
+// [routing id][empty][header][payload]; the reply header echoes the request's sequence so
+// replies match requests, and payload type id 0 in a reply means "not served". A reply to
+// a teammate (another robot of SocketOptions::roster) crosses the radio: it travels with a
+// roster slot, in its compact codec form and compressed like a team message, and the radio
+// model's loss and range apply to the round trip.
 // Neither is thread-safe: use each from one thread (the loop thread).
 
 #include <chrono>
@@ -17,6 +20,7 @@
 #include "common/transport/accounting.h"
 #include "common/transport/context.h"
 #include "common/transport/envelope.h"
+#include "common/transport/payload_wire.h"
 #include "common/transport/pollable.h"
 #include "common/transport/socket_options.h"
 #include "common/transport/subscriber.h"
@@ -39,12 +43,12 @@ class Responder : public Pollable {
   template <typename Req, typename Rep>
   void serve(std::function<Rep(const Received<Req>&)> handler) {
     add_handler(type_name<Req>(), type_name<Rep>(),
-                [handler = std::move(handler), request = Req()](const v1::Header& header, const void* data,
-                                                                size_t size, zmq::message_t& reply_out) mutable {
+                [handler = std::move(handler), request = Req()](const v1::Header& header, std::string_view data,
+                                                                size_t wire_bytes, ReplyOut& reply_out) mutable {
                   request.Clear();
-                  if (!request.ParseFromArray(data, static_cast<int>(size))) return false;
-                  const Rep reply = handler(Received<Req>{request_topic(type_name<Req>()), header, request});
-                  reply_out = to_frame(reply);
+                  if (!request.ParseFromArray(data.data(), static_cast<int>(data.size()))) return false;
+                  const Rep reply = handler(Received<Req>{request_topic(type_name<Req>()), header, request, wire_bytes});
+                  reply_out.encode(reply);
                   return true;
                 });
   }
@@ -59,12 +63,21 @@ class Responder : public Pollable {
   const char* role() const override { return "responder"; }
 
  private:
-  using Handle = std::function<bool(const v1::Header&, const void*, size_t, zmq::message_t&)>;
+  // The reply's payload frame and flags, encoded for where it goes.
+  struct ReplyOut {
+    const SocketOptions& options;
+    bool radio;  // to another robot: compact and compressed like a team message
+    std::string bytes;
+    uint8_t flags = 0;
+    void encode(const google::protobuf::MessageLite& reply);
+  };
+  using Handle = std::function<bool(const v1::Header&, std::string_view, size_t, ReplyOut&)>;
   void add_handler(const std::string& request_type, const std::string& reply_type, Handle handle);
   void reply(zmq::message_t& routing_id, const v1::Header& request, std::string_view reply_type,
-             zmq::message_t payload);
+             const ReplyOut* payload);
 
   struct Handler {
+    std::string request_type;
     std::string reply_type;
     Handle handle;
   };
@@ -73,7 +86,7 @@ class Responder : public Pollable {
   Accounting* accounting_;
   zmq::socket_t socket_;
   std::string endpoint_;
-  std::unordered_map<std::string, Handler> handlers_;
+  std::unordered_map<uint16_t, Handler> handlers_;  // by request type id
 };
 
 class Requester : public Pollable {
@@ -91,18 +104,18 @@ class Requester : public Pollable {
   void request(const Req& request, std::function<void(const Received<Rep>*)> on_reply,
                std::chrono::milliseconds timeout) {
     send_request(type_name<Req>(), request, type_name<Rep>(),
-                 [on_reply = std::move(on_reply)](const v1::Header* header, const void* data, size_t size) {
-                   if (header == nullptr) {
+                 [on_reply = std::move(on_reply)](const Reply* r) {
+                   if (r == nullptr) {
                      on_reply(nullptr);
                      return true;
                    }
                    Rep reply;
-                   if (!reply.ParseFromArray(data, static_cast<int>(size))) {
+                   if (!r->parse(reply)) {
                      on_reply(nullptr);
                      return false;
                    }
                    const std::string topic = request_topic(type_name<Rep>());
-                   const Received<Rep> received{topic, *header, reply};
+                   const Received<Rep> received{topic, r->header, reply, r->wire_bytes};
                    on_reply(&received);
                    return true;
                  },
@@ -137,8 +150,20 @@ class Requester : public Pollable {
   const char* role() const override { return "requester"; }
 
  private:
-  // header == nullptr: failed (time-out or not served). Returns false when the reply was unparsable.
-  using Complete = std::function<bool(const v1::Header*, const void*, size_t)>;
+  // A received reply, parsed on demand into the caller's type.
+  struct Reply {
+    const v1::Header& header;
+    size_t wire_bytes;
+    std::string_view payload;  // decompressed
+    uint8_t flags;
+    uint16_t type_id;
+    const SocketOptions& options;
+    bool parse(google::protobuf::MessageLite& m) const { return parse_payload(payload, flags, type_id, options, m); }
+  };
+  // nullptr: failed (time-out or not served). Returns false when the reply was unparsable.
+  using Complete = std::function<bool(const Reply*)>;
+  // Whether the round trip to a robot survives the radio (counted when it does not).
+  bool radio_delivers(const v1::Header& reply, std::string_view topic);
   void send_request(std::string_view request_type, const google::protobuf::MessageLite& request,
                     std::string_view reply_type, Complete complete, std::chrono::milliseconds timeout);
   void wait_until(const std::function<bool()>& done, std::chrono::milliseconds timeout);
@@ -148,6 +173,7 @@ class Requester : public Pollable {
     std::string reply_type;
     Complete complete;
   };
+  std::string scratch_;
   Identity identity_;
   SocketOptions options_;
   Accounting* accounting_;

@@ -30,6 +30,8 @@ void SocketOptions::validate() const {
   if (linger_ms < -1) fail("linger_ms", "must be >= -1");
   if (faults.drop_fraction < 0.0 || faults.drop_fraction > 1.0) fail("faults.drop_fraction", "must be in [0, 1]");
   if (faults.delay.count() < 0) fail("faults.delay", "must be >= 0");
+  if (compress_level < 1 || compress_level > 19) fail("compress_level", "must be in [1, 19]");
+  if (radio && !roster) fail("radio", "needs the roster (radio verdicts are per robot slot)");
 }
 
 }  // namespace hexplore::transport

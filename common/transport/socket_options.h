@@ -1,14 +1,19 @@
 #pragma once
-// Per-socket settings: ZeroMQ limits set explicitly on every socket, and fault injection for
-// tests (drop or delay outgoing messages on chosen topics).
+// Per-socket settings: ZeroMQ limits set explicitly on every socket, the team's wire context
+// (roster, team payload codecs, compression), the radio model, and fault injection for tests
+// (drop or delay outgoing messages on chosen topics).
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "common/core/team_config.h"
+#include "common/transport/link_model.h"
+#include "common/transport/payload_codec.h"
+#include "common/transport/roster.h"
 
 namespace hexplore::transport {
 
@@ -33,6 +38,20 @@ struct SocketOptions {
   int64_t max_message_bytes = 64 * 1024 * 1024;
   int linger_ms = 1000;                      // ZMQ_LINGER: how long close may flush queued messages
   FaultInjection faults;
+
+  // The team's roster: compact headers name senders by slot. Null: senders go by name.
+  std::shared_ptr<const Roster> roster;
+  // Compact forms of team payloads (common/radio). Null: team payloads travel as protobuf.
+  std::shared_ptr<const CodecTable> codecs;
+  // Team payloads of at least this many bytes are zstd-compressed when that makes them
+  // smaller (below it the frame overhead eats the gain); 0 = never.
+  size_t compress_min_bytes = 96;
+  int compress_level = 19;  // small payloads: even the strongest level costs microseconds
+  // The radio model of team traffic between robots; null: an ideal link.
+  std::shared_ptr<RadioMedium> radio;
+  // The robot this socket belongs to (whose radio receives): the socket's identity for
+  // publishers and requesters, this field for subscribers.
+  std::string receiver_robot;
 
   static SocketOptions from_config(const core::TransportConfig& config);
   // Throws std::invalid_argument naming the bad field.

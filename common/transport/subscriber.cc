@@ -1,10 +1,12 @@
 #include "common/transport/subscriber.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <zmq_addon.hpp>
 
 #include "common/core/clock.h"
+#include "common/core/endpoints.h"
 #include "common/core/log.h"
 #include "common/transport/socket_util.h"
 #include "common/transport/topics.h"
@@ -18,13 +20,18 @@ struct Subscriber::State {
   Accounting* accounting;
   zmq::socket_t socket;
   std::vector<Handler> handlers;
-  v1::Header header;
+  DecodedHeader decoded;
+  std::string scratch;  // decompressed payloads
+  std::optional<uint32_t> radio_slot;  // the receiving robot's slot when the radio applies
 };
 
 Subscriber::Subscriber(Context& context, SocketOptions options, Accounting* accounting)
     : state_(std::make_unique<State>(context, std::move(options), accounting)) {
   state_->options.validate();
   detail::apply_options(state_->socket, state_->options);
+  const auto& o = state_->options;
+  if (o.radio && !o.receiver_robot.empty() && o.receiver_robot != core::kStationId)
+    state_->radio_slot = o.radio->roster().slot(o.receiver_robot);
 }
 
 Subscriber::Subscriber(Subscriber&&) noexcept = default;
@@ -36,9 +43,11 @@ void Subscriber::connect(const std::string& endpoint) { detail::connect(state_->
 void Subscriber::add_handler(std::string prefix, const std::string& type, Dispatch dispatch) {
   if (!topics::is_valid_prefix(prefix))
     throw std::invalid_argument("transport: invalid subscription prefix '" + prefix + "'");
-  // Subscribe once per distinct prefix; ZeroMQ counts duplicate subscriptions anyway.
-  state_->socket.set(zmq::sockopt::subscribe, prefix);
-  state_->handlers.push_back(Handler{std::move(prefix), type, std::move(dispatch)});
+  // Subscribe once per distinct prefix; ZeroMQ counts duplicate subscriptions anyway. A team
+  // prefix also covers the wire codes of the team topics it matches.
+  for (const std::string& wire : topics::wire_prefixes(prefix)) state_->socket.set(zmq::sockopt::subscribe, wire);
+  remember_type_name(type);
+  state_->handlers.push_back(Handler{std::move(prefix), type, type_id(type), std::move(dispatch)});
 }
 
 zmq::socket_t* Subscriber::input_socket() { return &state_->socket; }
@@ -55,18 +64,39 @@ void drop(Accounting* accounting, std::string_view topic, DropReason reason, std
 
 }  // namespace
 
+bool Subscriber::radio_delivers(std::string_view topic, const v1::Header& header) {
+  State& s = *state_;
+  if (!s.radio_slot || !topics::is_team_topic(topic)) return true;
+  const auto sender = s.options.radio->roster().slot(header.robot_id());
+  // The station and the robot itself are not on the other end of the radio.
+  if (!sender || *sender == 0 || *sender == *s.radio_slot) return true;
+  switch (s.options.radio->receive(*sender, *s.radio_slot, topic, header.sequence(), now_ns())) {
+    case RadioVerdict::kDelivered: return true;
+    case RadioVerdict::kLost:
+      if (s.accounting) s.accounting->record_dropped(topic, DropReason::kRadioLost);
+      return false;
+    case RadioVerdict::kOutOfRange:
+      if (s.accounting) s.accounting->record_dropped(topic, DropReason::kRadioOutOfRange);
+      return false;
+  }
+  return true;
+}
+
 void Subscriber::handle(std::vector<zmq::message_t>& frames) {
   State& s = *state_;
-  const std::string_view topic = frames.empty() ? std::string_view() : frames[0].to_string_view();
+  const std::string_view wire_topic = frames.empty() ? std::string_view() : frames[0].to_string_view();
+  const std::optional<std::string_view> named = topics::topic_from_wire(wire_topic);
+  const std::string_view topic = named.value_or(std::string_view());
   if (frames.size() != 3) {
     drop(s.accounting, topic, DropReason::kMalformed, std::to_string(frames.size()) + " frames instead of 3");
     return;
   }
-  if (!topics::is_valid_topic(topic)) {
+  if (!named || !topics::is_valid_topic(topic)) {
     drop(s.accounting, topic, DropReason::kMalformed, "invalid topic");
     return;
   }
-  if (auto reason = check_envelope(frames[1], frames[2], s.options.max_message_bytes, s.header)) {
+  const v1::Header& header = s.decoded.header;
+  if (auto reason = check_envelope(frames[1], frames[2], s.options.max_message_bytes, s.options.roster.get(), s.decoded)) {
     std::string detail;
     switch (*reason) {
       case DropReason::kOversize:
@@ -74,7 +104,7 @@ void Subscriber::handle(std::vector<zmq::message_t>& frames) {
                  std::to_string(s.options.max_message_bytes);
         break;
       case DropReason::kWrongVersion:
-        detail = "schema version " + std::to_string(s.header.schema_version()) + ", expected " +
+        detail = "schema version " + std::to_string(header.schema_version()) + ", expected " +
                  std::to_string(current_schema_version());
         break;
       default:
@@ -83,14 +113,26 @@ void Subscriber::handle(std::vector<zmq::message_t>& frames) {
     drop(s.accounting, topic, *reason, detail);
     return;
   }
+  if (!radio_delivers(topic, header)) return;
   const int64_t received_ns = core::wall_time_ns();
+  const uint16_t type = s.decoded.type_id;
   bool type_matched = false;
   bool parse_failed = false;
+  std::string_view payload;
+  const size_t wire_bytes = frames[0].size() + frames[1].size() + frames[2].size();
   for (Handler& h : s.handlers) {
-    if (!topics::matches(h.prefix, topic) || h.type != s.header.payload_type()) continue;
-    type_matched = true;
+    if (!topics::matches(h.prefix, topic) || h.type_id != type) continue;
+    if (!type_matched) {
+      type_matched = true;
+      s.decoded.header.set_payload_type(h.type);
+      if (!unpack_payload(frames[2].to_string_view(), s.decoded.payload_flags, s.options, s.scratch, payload)) {
+        drop(s.accounting, topic, DropReason::kMalformed, "compressed payload is corrupt or too large");
+        return;
+      }
+    }
     try {
-      if (!h.dispatch(topic, s.header, frames[2].data(), frames[2].size())) parse_failed = true;
+      const Delivery d{topic, header, wire_bytes, payload, s.decoded.payload_flags, type, s.options};
+      if (!h.dispatch(d)) parse_failed = true;
     } catch (const std::exception& e) {
       // A handler bug or a message it cannot use must not take the service down.
       drop(s.accounting, topic, DropReason::kHandlerError, std::string("handler threw: ") + e.what());
@@ -98,17 +140,17 @@ void Subscriber::handle(std::vector<zmq::message_t>& frames) {
     }
   }
   if (!type_matched) {
-    drop(s.accounting, topic, DropReason::kWrongType, "payload type '" + s.header.payload_type().substr(0, 80) +
-                                                          "' has no handler for this topic");
+    drop(s.accounting, topic, DropReason::kWrongType, "payload " + type_label(type) + " has no handler for this topic");
     return;
   }
   if (parse_failed) {
-    drop(s.accounting, topic, DropReason::kMalformed, "payload does not parse as " + s.header.payload_type());
+    drop(s.accounting, topic, DropReason::kMalformed, "payload does not parse as " + header.payload_type());
     return;
   }
   if (s.accounting) {
-    const size_t bytes = frames[0].size() + frames[1].size() + frames[2].size();
-    s.accounting->record_received(topic, s.header.robot_id(), bytes, received_ns - s.header.send_time_ns());
+    // Radio messages carry no wall time: no latency sample for them.
+    const int64_t latency_ns = s.decoded.has_wall_time ? std::max<int64_t>(0, received_ns - header.send_time_ns()) : -1;
+    s.accounting->record_received(topic, header.robot_id(), wire_bytes, latency_ns);
   }
 }
 

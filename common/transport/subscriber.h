@@ -1,8 +1,9 @@
 #pragma once
 // Typed subscriber on a SUB socket. on<M>(prefix, handler) subscribes to a topic prefix and
 // calls the handler with the parsed message; frames with a bad envelope, a payload type other
-// than M or an unparsable payload are counted by reason and dropped. Not thread-safe: one
-// thread (the loop thread) receives.
+// than M or an unparsable payload are counted by reason and dropped. Team messages between
+// robots pass the radio model's receiver side (loss, range) when the socket has one. Not
+// thread-safe: one thread (the loop thread) receives.
 
 #include <chrono>
 #include <functional>
@@ -16,6 +17,7 @@
 #include "common/transport/accounting.h"
 #include "common/transport/context.h"
 #include "common/transport/envelope.h"
+#include "common/transport/payload_wire.h"
 #include "common/transport/pollable.h"
 #include "common/transport/socket_options.h"
 #include "hexplore/v1/header.pb.h"
@@ -28,6 +30,7 @@ struct Received {
   std::string_view topic;
   const v1::Header& header;
   const M& message;
+  size_t wire_bytes = 0;  // what it took on the wire: topic, header and payload frames
 };
 
 class Subscriber : public Pollable {
@@ -49,11 +52,9 @@ class Subscriber : public Pollable {
   template <typename M>
   void on(std::string_view topic_prefix, std::function<void(const Received<M>&)> handler) {
     add_handler(std::string(topic_prefix), type_name<M>(),
-                [handler = std::move(handler), message = M()](std::string_view topic, const v1::Header& header,
-                                                               const void* data, size_t size) mutable {
-                  message.Clear();
-                  if (!message.ParseFromArray(data, static_cast<int>(size))) return false;
-                  handler(Received<M>{topic, header, message});
+                [handler = std::move(handler), message = M()](const Delivery& d) mutable {
+                  if (!d.parse(message)) return false;
+                  handler(Received<M>{d.topic, d.header, message, d.wire_bytes});
                   return true;
                 });
   }
@@ -69,13 +70,30 @@ class Subscriber : public Pollable {
   const char* role() const override { return "subscriber"; }
 
  private:
+  // One received message as the handlers see it; parse() fills a handler's message from the
+  // (already unpacked) payload bytes.
+  struct Delivery {
+    std::string_view topic;
+    const v1::Header& header;
+    size_t wire_bytes;
+    std::string_view payload;  // decompressed
+    uint8_t payload_flags;
+    uint16_t type_id;
+    const SocketOptions& options;
+    bool parse(google::protobuf::MessageLite& message) const {
+      return parse_payload(payload, payload_flags, type_id, options, message);
+    }
+  };
   // Parses the payload into the handler's type and calls it; false when parsing failed.
-  using Dispatch = std::function<bool(std::string_view, const v1::Header&, const void*, size_t)>;
+  using Dispatch = std::function<bool(const Delivery&)>;
   void add_handler(std::string prefix, const std::string& type, Dispatch dispatch);
+  // Applies the radio's receiver side; false (counted) when the message does not arrive.
+  bool radio_delivers(std::string_view topic, const v1::Header& header);
 
   struct Handler {
     std::string prefix;
     std::string type;
+    uint16_t type_id;
     Dispatch dispatch;
   };
   struct State;

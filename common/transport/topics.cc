@@ -22,7 +22,34 @@ bool valid(std::string_view text, bool prefix) {
   return prefix || text.back() != '/';
 }
 
+// Wire codes of the team topics, in code order (code = index + 1).
+constexpr std::string_view kCoded[] = {kTeamPose, kTeamMap, kTeamPlan, kTeamPath, kTeamMission};
+constexpr char kCodes[] = {'\x01', '\x02', '\x03', '\x04', '\x05'};
+
 }  // namespace
+
+bool is_team_topic(std::string_view topic) { return topic.substr(0, kTeamPrefix.size()) == kTeamPrefix; }
+
+std::string_view wire_topic(std::string_view topic) {
+  for (size_t i = 0; i < std::size(kCoded); ++i)
+    if (kCoded[i] == topic) return std::string_view(&kCodes[i], 1);
+  return topic;
+}
+
+std::optional<std::string_view> topic_from_wire(std::string_view wire) {
+  if (wire.empty() || static_cast<unsigned char>(wire.front()) >= 0x20) return wire;
+  if (wire.size() != 1) return std::nullopt;
+  const size_t index = static_cast<unsigned char>(wire.front()) - 1;
+  if (index >= std::size(kCoded)) return std::nullopt;
+  return kCoded[index];
+}
+
+std::vector<std::string> wire_prefixes(std::string_view prefix) {
+  std::vector<std::string> out{std::string(prefix)};
+  for (size_t i = 0; i < std::size(kCoded); ++i)
+    if (matches(prefix, kCoded[i])) out.emplace_back(1, kCodes[i]);
+  return out;
+}
 
 std::string robot_topic(std::string_view robot_id, std::string_view leaf) {
   std::string topic;

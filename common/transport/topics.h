@@ -3,8 +3,10 @@
 // "team/" receives every team topic and "robot/r1/" every topic of robot r1. Robot-local
 // topics are robot/<id>/<leaf>; team topics (team/<leaf>) are the only ones that cross robots.
 
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace hexplore::transport::topics {
 
@@ -18,13 +20,33 @@ inline constexpr std::string_view kPath = "path";        // ExecutablePath   pla
 inline constexpr std::string_view kMotion = "motion";    // MotionCommand    safety -> sim
 inline constexpr std::string_view kStatus = "status";    // ServiceStatus    every service
 
+// The simulated world: each sim shares its robot's true body with the other sims at the motion
+// rate, so that teammates are solid and visible to its LiDARs. It stands for physics, which
+// hardware gets for free: no robot service reads it, and it is not radio traffic.
+inline constexpr std::string_view kSimBody = "sim/body";  // RobotPose      sim -> other sims
+
 // Team topics.
 inline constexpr std::string_view kTeamPrefix = "team/";
-inline constexpr std::string_view kTeamPose = "team/pose";        // RobotPose      sim -> teammates
+inline constexpr std::string_view kTeamPose = "team/pose";        // RobotPose      sim -> teammates (dead-reckoned)
 inline constexpr std::string_view kTeamMap = "team/map";          // MapIncrement   hlmap -> peers' hlmap
 inline constexpr std::string_view kTeamPlan = "team/plan";        // TeamSolution   planning -> peers' planning
-inline constexpr std::string_view kTeamPath = "team/path";        // PathFragment   safety -> peers' safety
+inline constexpr std::string_view kTeamPath = "team/path";        // PathFragment   safety -> peers' safety (on change)
 inline constexpr std::string_view kTeamMission = "team/mission";  // MissionCommand station -> everyone
+
+// Team topics cross robots: what the paper's communication tables count and what the radio
+// model (link_model.h) applies to.
+bool is_team_topic(std::string_view topic);
+
+// On the wire every team topic above travels as a one-byte code instead of its name (the name
+// alone would outweigh a compact pose). Codes are control bytes, which no valid topic starts
+// with, so they never collide with a named topic; other topics go by name.
+std::string_view wire_topic(std::string_view topic);
+// The topic a received first frame stands for: the name of a code, else the frame itself;
+// nullopt for a control byte that is no known code.
+std::optional<std::string_view> topic_from_wire(std::string_view wire);
+// The ZeroMQ subscriptions a prefix needs: the prefix itself plus the code of every coded
+// topic it covers ("team/" -> "team/" and five codes).
+std::vector<std::string> wire_prefixes(std::string_view prefix);
 
 // "robot/<id>/<leaf>".
 std::string robot_topic(std::string_view robot_id, std::string_view leaf);

@@ -7,6 +7,7 @@
 #include "common/core/config_error.h"
 #include "common/core/log.h"
 #include "common/highlevel/proto_convert.h"
+#include "common/transport/payload_wire.h"
 #include "common/transport/topics.h"
 
 namespace hexplore::hlmap {
@@ -83,6 +84,8 @@ void HlmapService::setup(service::ServiceContext& context) {
   metrics_.repair_requests = counter("hexplore_hlmap_repair_requests_total", "MapRepairRequests sent to peers");
   metrics_.snapshots_served = counter("hexplore_hlmap_snapshots_served_total", "MapSnapshots served to peers");
   metrics_.bad_deltas = counter("hexplore_hlmap_bad_voxel_deltas_total", "Voxel deltas dropped (wrong resolution)");
+  metrics_.full_map_bytes = counter("hexplore_hlmap_full_map_equivalent_bytes_total",
+                                    "Bytes that broadcasting the whole contribution every eta_c would have cost");
 
   // Own mapping's voxels; every peer's hlmap for team/map.
   context.connect(robot_id_, core::ServiceKind::kMapping);
@@ -189,6 +192,7 @@ void HlmapService::window() {
   const v1::MapIncrement message = highlevel::to_increment(inc, log_->contribution());
   context_->publisher().publish(topics::kTeamMap, message);
   metrics_.window_bytes_team_map->set(static_cast<double>(message.ByteSizeLong()));
+  count_full_map(!inc.update.empty());
 
   // 2. Repairs that are due.
   for (const auto& req : sync_->due_requests(now_s())) {
@@ -226,6 +230,23 @@ void HlmapService::window() {
   if (map.size() > 0) context_->set_state(v1::SERVICE_STATE_RUNNING);
 }
 
+void HlmapService::count_full_map(bool changed) {
+  if (changed || full_map_window_bytes_ == 0) {
+    // The whole contribution in the increments' own wire form (codec, compression), plus the
+    // envelope an increment carries: topic code and a compact header.
+    const v1::MapIncrement full = highlevel::to_increment(log_->snapshot(), log_->contribution());
+    std::string payload;
+    transport::SocketOptions options = context_->socket_options();
+    options.compress_level = 3;  // a whole map every second would not be squeezed at level 19
+    transport::encode_payload(full, transport::type_id(transport::type_name<v1::MapIncrement>()), true, options,
+                              payload);
+    constexpr size_t kEnvelopeBytes = 1 + 10;
+    full_map_window_bytes_ = payload.size() + kEnvelopeBytes;
+  }
+  full_map_bytes_ += static_cast<double>(full_map_window_bytes_);
+  metrics_.full_map_bytes->increment(static_cast<double>(full_map_window_bytes_));
+}
+
 void HlmapService::fill_status(v1::ServiceStatus& status) {
   auto add = [&](const char* name, double value) {
     v1::StatusValue* v = status.add_values();
@@ -241,6 +262,9 @@ void HlmapService::fill_status(v1::ServiceStatus& status) {
   add("own_increment_seq", static_cast<double>(log_->seq()));
   add("gaps_detected", static_cast<double>(sync_->stats().gaps_detected));
   add("gaps_repaired", static_cast<double>(sync_->stats().gaps_repaired));
+  add("repair_requests", static_cast<double>(sync_->stats().repair_requests));
+  add("snapshots_applied", static_cast<double>(sync_->stats().snapshots_applied));
+  add("full_map_bytes", full_map_bytes_);
 }
 
 }  // namespace hexplore::hlmap

@@ -33,6 +33,8 @@ class HlmapService : public service::Service {
   v1::MapSnapshot serve_repair(const v1::MapRepairRequest& request);
   v1::FusedMapUpdate serve_fused(const v1::FusedMapRequest& request);
   void window();
+  // Adds one window of the full-map strategy (encoded only when the contribution changed).
+  void count_full_map(bool changed);
   double now_s() const;
 
   service::ServiceContext* context_ = nullptr;
@@ -47,6 +49,10 @@ class HlmapService : public service::Service {
   double repair_timeout_s_ = 2.0;
   size_t window_team_bytes_ = 0;
   size_t window_snapshot_bytes_ = 0;
+  // Table 4-5's full strategy: what broadcasting the whole contribution every eta_c, in the
+  // same wire form as the increments, would have cost so far.
+  double full_map_bytes_ = 0.0;
+  size_t full_map_window_bytes_ = 0;  // the last window's, reused while nothing changes
 
   struct Metrics {
     metrics::Histogram* segmentation_s = nullptr;
@@ -65,6 +71,7 @@ class HlmapService : public service::Service {
     metrics::Counter* repair_requests = nullptr;
     metrics::Counter* snapshots_served = nullptr;
     metrics::Counter* bad_deltas = nullptr;
+    metrics::Counter* full_map_bytes = nullptr;
   } metrics_;
   highlevel::PeerSyncStats reported_;  // sync stats already added to the counters
 };

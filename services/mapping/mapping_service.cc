@@ -9,6 +9,7 @@
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
 #include "common/core/log.h"
+#include "common/radio/pose_schedule.h"
 #include "common/perception/voxel_proto.h"
 #include "common/transport/topics.h"
 
@@ -108,10 +109,10 @@ void MappingService::setup(service::ServiceContext& context) {
   }
   auto& sub = context.subscriber();
   sub.on<v1::ScanFrame>(topics::scan(robot_id_), [this](const transport::Received<v1::ScanFrame>& r) {
-    on_scan(r.header.robot_id(), r.message);
+    on_scan(r.header.robot_id(), r.message, r.header.sim_time_ns());
   });
   sub.on<v1::RobotPose>(std::string(topics::kTeamPose), [this](const transport::Received<v1::RobotPose>& r) {
-    on_team_pose(r.header.robot_id(), r.message);
+    on_team_pose(r.header.robot_id(), r.message, r.header.sim_time_ns());
   });
   context.responder().serve<v1::OccupiedVoxelsRequest, v1::OccupiedVoxels>(
       [this](const transport::Received<v1::OccupiedVoxelsRequest>&) {
@@ -119,6 +120,15 @@ void MappingService::setup(service::ServiceContext& context) {
       });
 
   context.loop().add_timer(seconds(options_.publish_period_s), [this] { publish_changes(); });
+  raw_map_bytes_total_ = m.counter_family("hexplore_mapping_raw_map_equivalent_bytes_total",
+                                          "Bytes that sending the whole perception map every eta_c would have cost")
+                             ->add(labels);
+  context.loop().add_timer(seconds(context.team().params.eta_c_s), [this] {
+    if (delta_voxel_count_ <= 0.0) return;
+    const double bytes = static_cast<double>(map_->voxel_count()) * delta_payload_bytes_ / delta_voxel_count_;
+    raw_map_bytes_ += bytes;
+    raw_map_bytes_total_->increment(bytes);
+  });
   if (options_.full_snapshot_period_s > 0.0) {
     context.loop().add_timer(seconds(options_.full_snapshot_period_s), [this] { publish_full_snapshot(); });
   }
@@ -144,6 +154,7 @@ void MappingService::fill_status(v1::ServiceStatus& status) {
   add("voxels", map_ ? static_cast<double>(map_->voxel_count()) : 0.0);
   add("scans_integrated", static_cast<double>(scans_integrated_));
   add("scans_rejected", static_cast<double>(scans_rejected_));
+  add("raw_map_bytes", raw_map_bytes_);
 }
 
 void MappingService::reject(const std::string& reason) {
@@ -177,7 +188,7 @@ const char* MappingService::check_pose(const v1::ScanFrame& frame, const Eigen::
   return "pose_jump";
 }
 
-void MappingService::on_scan(const std::string& sender, const v1::ScanFrame& frame) {
+void MappingService::on_scan(const std::string& sender, const v1::ScanFrame& frame, int64_t sim_time_ns) {
   if (sender != robot_id_) {
     reject("foreign_robot");
     return;
@@ -203,7 +214,21 @@ void MappingService::on_scan(const std::string& sender, const v1::ScanFrame& fra
   std::vector<perception::OrientedBox> bodies;
   const int64_t now = context_->now_ns();
   for (const auto& [id, mate] : teammates_) {
-    if (core::ns_to_s(now - mate.received_ns) <= options_.teammate_timeout_s) bodies.push_back(mate.box);
+    if (core::ns_to_s(now - mate.received_ns) > options_.teammate_timeout_s) continue;
+    // Team poses come when dead reckoning says so: where the teammate is by this scan's time.
+    // The sender lets the extrapolation drift by up to threshold_m before it sends again, so the
+    // body is widened (horizontally) by that much while it is extrapolated.
+    perception::OrientedBox box = mate.box;
+    if (sim_time_ns > 0 && mate.sim_time_ns > 0) {
+      const radio::PoseScheduleOptions schedule;
+      const double age_s = core::ns_to_s(sim_time_ns - mate.sim_time_ns);
+      box.centre = radio::extrapolate_pose(box.centre, mate.velocity_mps, age_s, schedule.max_extrapolation_s);
+      if (age_s > 0.0) {
+        box.half_extents_m.x() += schedule.threshold_m;
+        box.half_extents_m.y() += schedule.threshold_m;
+      }
+    }
+    bodies.push_back(box);
   }
   const auto t0 = std::chrono::steady_clock::now();
   const perception::IntegrationStats stats = map_->integrate(scan, bodies);
@@ -225,7 +250,7 @@ void MappingService::on_scan(const std::string& sender, const v1::ScanFrame& fra
   if (scans_integrated_ == 1) context_->set_state(v1::SERVICE_STATE_RUNNING, "");
 }
 
-void MappingService::on_team_pose(const std::string& sender, const v1::RobotPose& pose) {
+void MappingService::on_team_pose(const std::string& sender, const v1::RobotPose& pose, int64_t sim_time_ns) {
   if (sender.empty() || sender == robot_id_) return;
   perception::OrientedBox box;
   box.centre = vec(pose.pose().position_m());
@@ -241,13 +266,15 @@ void MappingService::on_team_pose(const std::string& sender, const v1::RobotPose
     box.half_extents_m = species->body_half_extents_m;
   }
   if (!box.centre.allFinite() || !box.half_extents_m.allFinite()) return;
-  teammates_[sender] = Teammate{box, context_->now_ns()};
+  teammates_[sender] = Teammate{box, vec(pose.velocity_mps()), context_->now_ns(), sim_time_ns};
 }
 
 void MappingService::publish_delta(const v1::VoxelDelta& delta) {
   context_->publisher().publish(topics::voxels(robot_id_), delta);
   delta_voxels_->increment(delta.voxels_size());
   delta_bytes_->increment(static_cast<double>(delta.ByteSizeLong()));
+  delta_voxel_count_ += delta.voxels_size();
+  delta_payload_bytes_ += static_cast<double>(delta.ByteSizeLong());
   map_bytes_->set(static_cast<double>(map_->memory_bytes()));
 }
 

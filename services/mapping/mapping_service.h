@@ -45,11 +45,13 @@ class MappingService : public service::Service {
  private:
   struct Teammate {
     perception::OrientedBox box;
-    int64_t received_ns = 0;
+    Eigen::Vector3d velocity_mps = Eigen::Vector3d::Zero();
+    int64_t received_ns = 0;  // loop clock
+    int64_t sim_time_ns = 0;  // when the pose was taken (0: unknown)
   };
 
-  void on_scan(const std::string& sender, const v1::ScanFrame& frame);
-  void on_team_pose(const std::string& sender, const v1::RobotPose& pose);
+  void on_scan(const std::string& sender, const v1::ScanFrame& frame, int64_t sim_time_ns);
+  void on_team_pose(const std::string& sender, const v1::RobotPose& pose, int64_t sim_time_ns);
   // Null when the scan's pose is plausible; else the rejection reason.
   const char* check_pose(const v1::ScanFrame& frame, const Eigen::Vector3d& origin);
   void reject(const std::string& reason);
@@ -68,6 +70,12 @@ class MappingService : public service::Service {
   int jump_streak_ = 0;
   std::vector<float> scan_storage_;
   uint64_t scans_integrated_ = 0;
+  // Table 4-5's raw strategy: what sending the whole perception map every eta_c would have
+  // cost so far (voxels times the mean bytes of a voxel in this robot's deltas).
+  double raw_map_bytes_ = 0.0;
+  double delta_payload_bytes_ = 0.0;
+  double delta_voxel_count_ = 0.0;
+  metrics::Counter* raw_map_bytes_total_ = nullptr;
   uint64_t scans_rejected_ = 0;
 
   metrics::Histogram* integration_seconds_ = nullptr;

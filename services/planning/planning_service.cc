@@ -17,6 +17,7 @@
 #include "common/planning/open_targets.h"
 #include "common/planning/plan_proto.h"
 #include "common/planning/round_inputs.h"
+#include "common/radio/as_received.h"
 #include "common/transport/topics.h"
 
 namespace hexplore::planning_service {
@@ -374,8 +375,13 @@ void PlanningService::replan(const std::string& reason) {
     core::LogLine(core::LogLevel::kError, "planning") << robot_id_ << ": round " << round_ << " failed: " << e.what();
     return;
   }
-  // Our own solution is a reference candidate next round, like the teammates'.
-  if (active_->shares_route()) shared_[robot_id_] = res.as_reference(robot_id_);
+  // Our own solution is a reference candidate next round, like the teammates', at the precision
+  // they decode it with (the radio rounds coordinates), so that every robot weighs the same numbers.
+  if (active_->shares_route()) {
+    const transport::SocketOptions wire = context_->socket_options();
+    shared_[robot_id_] = planning::reference_from_proto(
+        radio::as_received(planning::to_proto(res), wire.codecs.get(), wire.roster.get()), robot_id_);
+  }
   const std::vector<planning::TaskView>& route = res.robots[size_t(req.self)].route;
 
   stage_views_->observe(res.times.views_s);

@@ -6,6 +6,7 @@
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
 #include "common/core/log.h"
+#include "common/radio/pose_schedule.h"
 #include "common/transport/topics.h"
 #include "services/safety/fragment_proto.h"
 
@@ -17,11 +18,13 @@ namespace topics = transport::topics;
 Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 // A teammate heard only through its driver's pose (its safety service is silent): moving along
-// its velocity, or standing still.
-Fragment fragment_from_pose(const std::string& id, const v1::RobotPose& pose, double eta_p_m) {
+// its velocity from where the pose, `age_s` old, puts it now, or standing still.
+Fragment fragment_from_pose(const std::string& id, const v1::RobotPose& pose, const Eigen::Vector3d& half_extents,
+                            double age_s, double eta_p_m) {
   Fragment f;
   f.robot_id = id;
-  f.position_m = vec(pose.pose().position_m());
+  f.position_m = radio::extrapolate_pose(vec(pose.pose().position_m()), vec(pose.velocity_mps()), age_s,
+                                         radio::PoseScheduleOptions{}.max_extrapolation_s);
   Eigen::Vector3d v = vec(pose.velocity_mps());
   v.z() = 0.0;
   const double speed = v.norm();
@@ -31,7 +34,7 @@ Fragment fragment_from_pose(const std::string& id, const v1::RobotPose& pose, do
     f.waypoints_m.push_back(f.position_m + v / speed * eta_p_m);
   }
   Eigen::Vector3d half = vec(pose.body_half_extents_m());
-  if (half.minCoeff() <= 0.0) half = Eigen::Vector3d(0.5, 0.5, 0.5);
+  if (half.minCoeff() <= 0.0) half = half_extents;
   body_box_any_yaw(f.position_m, half, f.box_min_m, f.box_max_m);
   return f;
 }
@@ -49,6 +52,11 @@ void SafetyService::setup(service::ServiceContext& context) {
   SafetyOptions options;
   options.eta_p_m = context.team().params.eta_p_m;
   resolver_ = std::make_unique<ConflictResolver>(robot_id_, species->body_half_extents_m, options);
+  SharingOptions sharing;
+  sharing.heartbeat_s = context.team().params.eta_c_s;
+  sharing.eta_p_m = options.eta_p_m;
+  sharing_ = FragmentSchedule(sharing);
+  peer_timeout_s_ = std::max(peer_timeout_s_, 2.0 * sharing.heartbeat_s + 0.5);
 
   const auto& args = context.arguments();
   if (auto it = args.find("decision-clock"); it != args.end()) {
@@ -107,6 +115,10 @@ void SafetyService::setup(service::ServiceContext& context) {
     if (id == robot_id_ || id.empty()) return;
     Peer& peer = peers_[id];
     peer.fragment = from_proto(r.message, id);
+    if (!r.message.has_body_box_m()) {
+      // The radio leaves the box out: it is the sender's species body around its position.
+      body_box_any_yaw(peer.fragment->position_m, half_extents_of(id), peer.fragment->box_min_m, peer.fragment->box_max_m);
+    }
     peer.fragment_ns = context_->now_ns();
     peer.fragment_sim_ns = r.header.sim_time_ns();
   });
@@ -189,19 +201,32 @@ void SafetyService::halt(const std::string& reason) {
   if (position_) share_fragment();
 }
 
-bool SafetyService::stale(int64_t received_ns, int64_t sent_sim_ns) const {
+double SafetyService::age_s(int64_t received_ns, int64_t sent_sim_ns) const {
   // Sim time when both sides have it (a fast sim ages messages faster than the wall clock).
-  if (sim_time_ns_ > 0 && sent_sim_ns > 0) return sim_time_ns_ - sent_sim_ns > core::s_to_ns(peer_timeout_s_);
-  return context_->now_ns() - received_ns > core::s_to_ns(peer_timeout_s_);
+  if (sim_time_ns_ > 0 && sent_sim_ns > 0) return core::ns_to_s(sim_time_ns_ - sent_sim_ns);
+  return core::ns_to_s(context_->now_ns() - received_ns);
+}
+
+bool SafetyService::stale(int64_t received_ns, int64_t sent_sim_ns) const {
+  return age_s(received_ns, sent_sim_ns) > peer_timeout_s_;
+}
+
+Eigen::Vector3d SafetyService::half_extents_of(const std::string& id) const {
+  const core::RobotConfig* robot = context_->team().find_robot(id);
+  const core::SpeciesConfig* species = robot ? context_->team().find_species(robot->species) : nullptr;
+  return species ? species->body_half_extents_m : Eigen::Vector3d(0.5, 0.5, 0.5);
 }
 
 std::vector<Fragment> SafetyService::peers() const {
   std::vector<Fragment> out;
   for (const auto& [id, peer] : peers_) {
     if (peer.fragment && !stale(peer.fragment_ns, peer.fragment_sim_ns)) {
-      out.push_back(*peer.fragment);
+      // Where the teammate is by now, driving the path it shared.
+      out.push_back(advance_fragment(*peer.fragment, age_s(peer.fragment_ns, peer.fragment_sim_ns),
+                                     resolver_->options().eta_p_m));
     } else if (peer.pose) {
-      Fragment f = fragment_from_pose(id, *peer.pose, resolver_->options().eta_p_m);
+      Fragment f = fragment_from_pose(id, *peer.pose, half_extents_of(id), age_s(peer.pose_ns, peer.pose_sim_ns),
+                                      resolver_->options().eta_p_m);
       if (stale(peer.pose_ns, peer.pose_sim_ns)) {
         // Silent (radio or services gone): its body is still where it was last seen, and it
         // is no longer known to move. A stopped box to drive around, never forgotten.
@@ -275,7 +300,11 @@ void SafetyService::share_fragment() {
     f.waypoints_m.clear();
     f.yielding_to.clear();
   }
+  // On the radio only when teammates' prediction of the last one no longer holds.
+  const double now = now_s();
+  if (!sharing_.due(now, f)) return;
   context_->publisher().publish(topics::kTeamPath, to_proto(f), sim_time_ns_);
+  sharing_.sent(now, f);
 }
 
 void SafetyService::fill_status(v1::ServiceStatus& status) {

@@ -1,9 +1,11 @@
 #pragma once
 // The safety process of one robot: takes the executable path from planning, resolves conflicts
 // with teammates (paper "Path-Conflict Resolution Strategy") and sends the approved path or a
-// stop to the robot driver. Shares its own near path on team/path at the decision rate, and
-// obeys mission commands: an emergency stop halts the robot at once and refuses paths until a
-// StartMission; a StopMission halts it the same way.
+// stop to the robot driver. Shares its own near path on team/path when it changed or once per
+// eta_c (common/safety/fragment_sharing.h): teammates advance the last fragment they heard
+// along its path, as this service does with theirs. Obeys mission commands: an emergency stop
+// halts the robot at once and refuses paths until a StartMission; a StopMission halts it the
+// same way.
 
 #include <cstdint>
 #include <map>
@@ -13,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include "common/safety/fragment_sharing.h"
 #include "common/safety/resolver.h"
 #include "common/service/service.h"
 #include "hexplore/v1/mission.pb.h"
@@ -57,6 +60,10 @@ class SafetyService : public service::Service {
   std::vector<Fragment> peers() const;
   // Whether a message received at (wall, sim) is too old to act on.
   bool stale(int64_t received_ns, int64_t sent_sim_ns) const;
+  // Seconds since a message of (wall, sim) was sent, on the clock stale() uses.
+  double age_s(int64_t received_ns, int64_t sent_sim_ns) const;
+  // A teammate's body half extents, from its species in the team file.
+  Eigen::Vector3d half_extents_of(const std::string& id) const;
   void publish(const v1::MotionCommand& command);
   void share_fragment();
   double now_s() const;
@@ -65,7 +72,10 @@ class SafetyService : public service::Service {
   std::string robot_id_;
   std::unique_ptr<ConflictResolver> resolver_;
   double default_speed_mps_ = 0.5;
-  double peer_timeout_s_ = 1.5;
+  // Fragments arrive once per eta_c while nothing changes: one lost heartbeat, plus latency,
+  // must not make a teammate look silent.
+  double peer_timeout_s_ = 2.5;
+  FragmentSchedule sharing_;
   std::optional<Eigen::Vector3d> position_;
   int64_t sim_time_ns_ = 0;
   bool sim_clock_ = true;              // --decision-clock sim

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
@@ -19,7 +20,7 @@ namespace {
 
 namespace topics = transport::topics;
 
-constexpr int64_t kTeammateTimeoutNs = 2'000'000'000;  // a proxy whose poses stopped is dropped
+constexpr int64_t kTeammateTimeoutNs = 2'000'000'000;  // a proxy whose sim went silent is dropped
 
 void set_vec(v1::Vec3* out, const Eigen::Vector3d& v) {
   out->set_x(v.x());
@@ -147,7 +148,9 @@ void SimService::setup(service::ServiceContext& context) {
                         MotionState::kEmergencyStop})
     motion_state_[s] = state->add({{"robot", robot_id_}, {"state", to_string(s)}});
 
-  // Inputs: own safety (motion), teammates' sims (team/pose), the station (mission).
+  if (transport::RadioMedium* radio = context.radio()) radio_slot_ = radio->roster().slot(robot_id_);
+
+  // Inputs: own safety (motion), teammates' sims (sim/body), the station (mission).
   context.connect(robot_id_, core::ServiceKind::kSafety);
   for (const auto& other : context.team().robots)
     if (other.id != robot_id_) context.connect(other.id, core::ServiceKind::kSim);
@@ -155,8 +158,8 @@ void SimService::setup(service::ServiceContext& context) {
   auto& sub = context.subscriber();
   sub.on<v1::MotionCommand>(topics::motion(robot_id_),
                             [this](const transport::Received<v1::MotionCommand>& r) { on_motion(r.message); });
-  sub.on<v1::RobotPose>(std::string(topics::kTeamPose), [this](const transport::Received<v1::RobotPose>& r) {
-    on_team_pose(r.header.robot_id(), r.message);
+  sub.on<v1::RobotPose>(std::string(topics::kSimBody), [this](const transport::Received<v1::RobotPose>& r) {
+    on_body(r.header.robot_id(), r.message);
   });
   sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
                              [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
@@ -213,7 +216,7 @@ void SimService::on_mission(const v1::MissionCommand& command) {
   }
 }
 
-void SimService::on_team_pose(const std::string& sender, const v1::RobotPose& pose) {
+void SimService::on_body(const std::string& sender, const v1::RobotPose& pose) {
   if (sender == robot_id_ || sender.empty()) return;
   const auto index = context_->team().robot_index(sender);
   if (!index) return;
@@ -257,6 +260,13 @@ void SimService::tick() {
   if (motion_->collisions() > reported_collisions_) {
     collisions_->increment(motion_->collisions() - reported_collisions_);
     reported_collisions_ = motion_->collisions();
+    // Rare and always worth a line: where, and how close the nearest teammate's centre was.
+    const Eigen::Vector3d at = motion_->ground_position();
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const ProxyBox& m : mates) nearest = std::min(nearest, (m.center - motion_->body_pose().translation()).head<2>().norm());
+    char where[128];
+    std::snprintf(where, sizeof(where), "(%.2f, %.2f, %.2f), nearest teammate centre %.2f m", at.x(), at.y(), at.z(), nearest);
+    core::LogLine(core::LogLevel::kWarn, "sim") << robot_id_ << ": contact with a teammate at " << where;
   }
   update_gauges();
   publish_pose();
@@ -298,8 +308,19 @@ void SimService::publish_pose() {
   set_vec(pose.mutable_body_half_extents_m(), motion_->species().body_half_extents_m);
   pose.set_odometry_m(motion_->odometry_m());
   pose.set_collisions(motion_->collisions());
-  context_->publisher().publish(topics::pose(robot_id_), pose, clock_.now_ns());
-  context_->publisher().publish(topics::kTeamPose, pose, clock_.now_ns());
+  auto& pub = context_->publisher();
+  pub.publish(topics::pose(robot_id_), pose, clock_.now_ns());
+  pub.publish(topics::kSimBody, pose, clock_.now_ns());
+  if (radio_slot_) context_->radio()->positions().update(*radio_slot_, context_->now_ns(), motion_->body_pose().translation());
+  // The radio only when teammates' extrapolation of the last team pose no longer holds.
+  const double now_s = core::ns_to_s(clock_.now_ns());
+  const Eigen::Vector3d at = motion_->body_pose().translation();
+  const Eigen::Matrix3d r = motion_->body_pose().linear();
+  const double heading = std::atan2(r(1, 0), r(0, 0));
+  if (team_pose_schedule_.due(now_s, at, heading, pose.state())) {
+    pub.publish(topics::kTeamPose, pose, clock_.now_ns());
+    team_pose_schedule_.sent(now_s, at, motion_->velocity(), heading, pose.state());
+  }
 }
 
 void SimService::fill_status(v1::ServiceStatus& status) {

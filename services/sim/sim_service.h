@@ -1,9 +1,12 @@
 #pragma once
 // The sim process of one robot (paper: decentralized simulation): loads the team's world,
 // simulates only its own robot (body, LiDARs, motion) and publishes scans and poses with sim
-// time; teammates are kinematic proxy boxes driven by their team/pose messages and are hit
+// time: every motion step on robot/<id>/pose, and to the team on team/pose when dead
+// reckoning says so (common/radio/pose_schedule.h). Teammates are kinematic proxy boxes driven
+// by the other sims' sim/body (the simulated world's physics, not radio traffic) and are hit
 // by this robot's rays. Executes MotionCommands from its safety service and obeys mission
 // commands: stop halts, emergency stop halts at once and ignores motion until StartMission.
+// With a radio model it reports the robot's true position for the range check.
 //
 // Options (after --config/--robot):
 //   --scan-hz N            LiDAR frames per sim second, every sensor (default 2)
@@ -20,6 +23,7 @@
 
 #include <Eigen/Core>
 
+#include "common/radio/pose_schedule.h"
 #include "common/service/service.h"
 #include "common/sim/lidar.h"
 #include "common/sim/ray_caster.h"
@@ -53,7 +57,7 @@ class SimService : public service::Service {
   void load_world(service::ServiceContext& context);
   void on_motion(const v1::MotionCommand& command);
   void on_mission(const v1::MissionCommand& command);
-  void on_team_pose(const std::string& sender, const v1::RobotPose& pose);
+  void on_body(const std::string& sender, const v1::RobotPose& pose);
   void tick();
   void scan_all();
   void publish_pose();
@@ -74,6 +78,8 @@ class SimService : public service::Service {
   int64_t next_scan_ns_ = 0;
   MotionState last_state_ = MotionState::kIdle;
   uint32_t reported_collisions_ = 0;
+  radio::PoseSchedule team_pose_schedule_;
+  std::optional<uint32_t> radio_slot_;  // this robot's slot when a radio model wants positions
 
   metrics::Counter* blocked_ = nullptr;
   metrics::Counter* collisions_ = nullptr;

@@ -37,7 +37,8 @@ int send_command(const std::string& config_path, const std::string& what) {
   transport::Context context;
   transport::Requester requester(
       context, {"station-cli", "", "station"},
-      core::connect_endpoint(team, std::string(core::kStationId), core::ServiceKind::kStation, core::SocketRole::kRequest));
+      core::connect_endpoint(team, std::string(core::kStationId), core::ServiceKind::kStation, core::SocketRole::kRequest),
+      service::team_socket_options(team));
   const auto reply = requester.call<v1::MissionCommand, v1::ServiceStatus>(command, std::chrono::milliseconds(3000));
   if (!reply) {
     std::fprintf(stderr, "error: no station answered at %s\n",

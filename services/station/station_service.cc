@@ -53,9 +53,10 @@ std::string lowercase_after_prefix(const std::string& name, const std::string& p
   return out;
 }
 
+// What the message took on the radio: its topic, header and payload frames as received.
 template <typename M>
 size_t wire_bytes(const transport::Received<M>& r) {
-  return r.topic.size() + r.header.ByteSizeLong() + r.message.ByteSizeLong();
+  return r.wire_bytes;
 }
 
 }  // namespace
@@ -142,8 +143,9 @@ void StationService::setup(service::ServiceContext& context) {
 
 void StationService::subscribe_team(service::ServiceContext& context) {
   for (const auto& robot : context.team().robots) {
-    for (auto kind : {core::ServiceKind::kSim, core::ServiceKind::kHlmap, core::ServiceKind::kPlanning,
-                      core::ServiceKind::kSafety})
+    // Mapping for its status (what sending the whole perception map would cost).
+    for (auto kind : {core::ServiceKind::kSim, core::ServiceKind::kMapping, core::ServiceKind::kHlmap,
+                      core::ServiceKind::kPlanning, core::ServiceKind::kSafety})
       context.connect(robot.id, kind);
   }
   auto& sub = context.subscriber();
@@ -162,6 +164,7 @@ void StationService::subscribe_team(service::ServiceContext& context) {
                            [this](const auto& r) { recorder_->on_team_message(r.header.robot_id(), r.topic, wire_bytes(r)); });
   for (const auto& robot : context.team().robots) {
     sub.on<v1::ServiceStatus>(transport::topics::status(robot.id), [this](const auto& r) {
+      recorder_->on_status(r.header.robot_id(), r.header.service(), r.message);
       if (r.header.service() != "planning") return;
       const int views = recorder_->on_planning_status(r.header.robot_id(), r.message);
       if (views >= 0 && recorder_->started())

@@ -140,5 +140,44 @@ TEST(TeamConfig, SceneImportIsReadAndChecked) {
   }
 }
 
+TEST(TeamConfig, RadioModelIsReadAndChecked) {
+  const std::string base = "species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}]\n";
+  EXPECT_FALSE(parse_team_config(base, "t").transport.radio.active());  // an ideal link by default
+  const auto c = parse_team_config(base +
+                                       "transport:\n"
+                                       "  radio:\n"
+                                       "    bandwidth_bytes_per_s: 4096\n"
+                                       "    latency_s: 0.2\n"
+                                       "    loss: 0.1\n"
+                                       "    range_m: 25\n"
+                                       "    max_queue_age_s: 3\n",
+                                   "t");
+  const RadioConfig& radio = c.transport.radio;
+  EXPECT_TRUE(radio.active());
+  EXPECT_DOUBLE_EQ(radio.bandwidth_bytes_per_s, 4096.0);
+  EXPECT_DOUBLE_EQ(radio.latency_s, 0.2);
+  EXPECT_DOUBLE_EQ(radio.loss, 0.1);
+  EXPECT_DOUBLE_EQ(radio.range_m, 25.0);
+  EXPECT_DOUBLE_EQ(radio.max_queue_age_s, 3.0);
+  const std::pair<const char*, const char*> bad[] = {
+      {"    bandwith_bytes_per_s: 4096", "transport.radio.bandwith_bytes_per_s"},  // typo: unknown key
+      {"    bandwidth_bytes_per_s: -1", "transport.radio.bandwidth_bytes_per_s"},
+      {"    latency_s: 90", "transport.radio.latency_s"},
+      {"    loss: 1.0", "transport.radio.loss"},
+      {"    loss: lots", "transport.radio.loss"},
+      {"    range_m: -5", "transport.radio.range_m"},
+      {"    max_queue_age_s: 0", "transport.radio.max_queue_age_s"}};
+  for (const auto& [text, key] : bad) {
+    try {
+      parse_team_config(base + "transport:\n  radio:\n" + text + "\n", "t.yaml");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const ConfigError& e) {
+      EXPECT_EQ(e.file(), "t.yaml");
+      EXPECT_EQ(e.key(), key) << text;
+      EXPECT_EQ(e.line(), 5) << text;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hexplore::core

@@ -74,7 +74,7 @@ class MappingServiceTest : public ::testing::Test {
     };
     sim1_ = bind("r1");
     sim2_ = bind("r2");
-    watch_ = std::make_unique<transport::Subscriber>(host_->transport());
+    watch_ = std::make_unique<transport::Subscriber>(host_->transport(), host_->socket_options());
     watch_->on<v1::VoxelDelta>(topics::voxels("r1"), [this](const transport::Received<v1::VoxelDelta>& r) {
       if (r.message.full_snapshot()) {
         ++full_snapshots_;

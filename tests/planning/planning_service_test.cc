@@ -78,7 +78,7 @@ class PlanningServiceTest : public ::testing::Test {
     };
     station_ = bind(std::string(core::kStationId), ServiceKind::kStation);
     peer_sim_ = bind("r2", ServiceKind::kSim);
-    watch_ = std::make_unique<transport::Subscriber>(host_->transport());
+    watch_ = std::make_unique<transport::Subscriber>(host_->transport(), host_->socket_options());
     watch_->on<v1::TeamSolution>(std::string(topics::kTeamPlan),
                                  [this](const transport::Received<v1::TeamSolution>& r) { plan_ = r.message; });
     watch_->on<v1::ExplorationRoute>(topics::route("r1"),

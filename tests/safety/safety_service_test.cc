@@ -68,7 +68,7 @@ class SafetyServiceTest : public ::testing::Test {
     peer_ = bind("r2", ServiceKind::kSafety);
     peer_sim_ = bind("r2", ServiceKind::kSim);
     station_ = bind(std::string(core::kStationId), ServiceKind::kStation);
-    watch_ = std::make_unique<transport::Subscriber>(host_->transport());
+    watch_ = std::make_unique<transport::Subscriber>(host_->transport(), host_->socket_options());
     watch_->on<v1::MotionCommand>(topics::motion("r1"), [this](const transport::Received<v1::MotionCommand>& r) {
       last_motion_ = r.message;
     });

@@ -58,7 +58,7 @@ class SimServiceTest : public ::testing::Test {
     safety_ = bind("r1", ServiceKind::kSafety);
     mate_ = bind("r2", ServiceKind::kSim);
     station_ = bind(std::string(core::kStationId), ServiceKind::kStation);
-    watch_ = std::make_unique<transport::Subscriber>(host_->transport());
+    watch_ = std::make_unique<transport::Subscriber>(host_->transport(), host_->socket_options());
     watch_->on<v1::RobotPose>(topics::pose("r1"), [this](const transport::Received<v1::RobotPose>& r) {
       pose_ = r.message;
       pose_sim_ns_ = r.header.sim_time_ns();
@@ -157,7 +157,8 @@ TEST_F(SimServiceTest, TeammateProxiesAppearInScans) {
     }
     return n;
   };
-  ASSERT_TRUE(until([&] { mate_->publish(topics::kTeamPose, mate); }, [&] { return on_box() > 100; }));
+  // Teammates are solid in the simulated world through the other sims' sim/body.
+  ASSERT_TRUE(until([&] { mate_->publish(topics::kSimBody, mate); }, [&] { return on_box() > 100; }));
 }
 
 }  // namespace

@@ -37,6 +37,13 @@ ExperimentRecord sample_record(uint64_t seed, double time_s, double final_comple
   r.robots["b"].length_m = 9.5;
   r.team_bytes["a"]["pose"] = 2048;
   r.team_bytes["a"]["incremental_map"] = 10240;
+  r.team_messages["a"]["pose"] = 100;
+  r.team_messages["a"]["incremental_map"] = 100;
+  // What the two other map strategies would have sent, and the map re-sync of robot b.
+  r.robots["a"].counters = {{"hlmap.full_map_bytes", 409600.0}, {"mapping.raw_map_bytes", 4096000.0}};
+  r.robots["b"].counters = {{"hlmap.full_map_bytes", 204800.0}, {"mapping.raw_map_bytes", 2048000.0},
+                            {"hlmap.gaps_detected", 3}, {"hlmap.gaps_repaired", 2},
+                            {"hlmap.radio_out_of_range", 40}, {"sim.radio_out_of_range", 5}};
   r.planning_times_s["a"] = {0.05, 0.07};
   r.final_map_points_m = {{0, 0, 0}, {5, 5, 3}, {9, 1, 1}};
   r.open_targets = {{"a", 7, {1, 2, 3}, true, 40, 30, "density", "has_view", 1},
@@ -56,7 +63,7 @@ TEST(ResultsWriter, WritesEveryFile) {
   const auto dir = std::filesystem::temp_directory_path() / "hexplore_results_test";
   std::filesystem::remove_all(dir);
   const auto files = write_results(sample_record(1, 100.0, 0.8), dir.string());
-  EXPECT_EQ(files.size(), 8u);
+  EXPECT_EQ(files.size(), 9u);
   for (const auto& f : files) EXPECT_GT(std::filesystem::file_size(f), 20u) << f;
   const auto summary = slurp(dir / "summary.json");
   EXPECT_NE(summary.find("\"final_completeness\": 0.8"), std::string::npos) << summary;
@@ -69,7 +76,18 @@ TEST(ResultsWriter, WritesEveryFile) {
   const auto open = slurp(dir / "open_targets.csv");
   EXPECT_NE(open.find("a,9,2,2,0,0,20,5,angle,given_up,2"), std::string::npos) << open;
   const auto comm = slurp(dir / "communication.csv");
-  EXPECT_NE(comm.find("a,incremental_map,10,0.1"), std::string::npos) << comm;
+  EXPECT_NE(comm.find("robot,category,messages,cumulative_kb,average_kb_per_s\n"), std::string::npos) << comm;
+  EXPECT_NE(comm.find("a,incremental_map,100,10,0.1"), std::string::npos) << comm;
+  EXPECT_NE(comm.find("b,pose,0,0,0"), std::string::npos) << comm;
+  // Table 4-5: per robot (summed, divided by two robots), over 100 s.
+  const auto strategies = slurp(dir / "map_transmission.csv");
+  EXPECT_NE(strategies.find("incremental_high_level,5,0.05\n"), std::string::npos) << strategies;
+  EXPECT_NE(strategies.find("full_high_level,300,3\n"), std::string::npos) << strategies;
+  EXPECT_NE(strategies.find("full_perception,3000,30\n"), std::string::npos) << strategies;
+  EXPECT_NE(summary.find("\"saving_vs_full_high_level\": 0.9833333333"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"map_sync\": {\"gaps_detected\": 3, \"gaps_repaired\": 2"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"radio_drops\": {\"expired\": 0, \"lost\": 0, \"out_of_range\": 45}"), std::string::npos)
+      << summary;
   const auto completeness = slurp(dir / "completeness.csv");
   EXPECT_EQ(std::count(completeness.begin(), completeness.end(), '\n'), 12);
 }
@@ -82,6 +100,10 @@ TEST(ResultsWriter, MultiRunSummaryHasMeanAndSpread) {
   EXPECT_NE(json.find("\"seeds\": [1, 2]"), std::string::npos);
   EXPECT_NE(json.find("\"final_observable_completeness\": {"), std::string::npos);
   EXPECT_NE(json.find("\"end_reasons\": ["), std::string::npos);
+  // Per robot and category, and the three map strategies (seed 1: 2 KB of pose over 100 s, 2 robots).
+  EXPECT_NE(json.find("\"pose\": {\"mean\": 0.0075"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"map_transmission_kb_per_s\": {"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"map_gaps_detected\": {\"mean\": 3"), std::string::npos) << json;
 }
 
 TEST(ResultsWriter, UnwritableFolderIsNamed) {

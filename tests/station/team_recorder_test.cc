@@ -53,12 +53,30 @@ TEST(TeamRecorder, IgnoresEverythingBeforeStart) {
   EXPECT_TRUE(r.record().team_bytes.empty());
 }
 
+v1::ServiceStatus status(std::initializer_list<std::pair<std::string, double>> values) {
+  v1::ServiceStatus s;
+  for (const auto& [name, value] : values) {
+    auto* v = s.add_values();
+    v->set_name(name);
+    v->set_value(value);
+  }
+  return s;
+}
+
 TEST(TeamRecorder, TrajectoryLengthUsesOdometryAndBytesAreCategorised) {
   const auto t = team();
   TeamRecorder r(t);
+  r.on_status("a", "sim", status({{"odometry_m", 5.0}, {"collisions", 1}}));  // before the start
   r.start(10.0);
-  for (int i = 0; i <= 10; ++i) r.on_pose("a", 10.0 + i, pose_at(i * 1.0, 0.0, 5.0 + i * 1.0));
-  EXPECT_NEAR(r.record().robots.at("a").length_m, 10.0, 1e-9);
+  for (int i = 0; i <= 10; ++i) {
+    r.on_pose("a", 10.0 + i, pose_at(i * 1.0, 0.0, 0.0));
+    r.on_pose("b", 10.0 + i, pose_at(0.0, i * 2.0, 0.0));
+  }
+  EXPECT_NEAR(r.record().robots.at("b").length_m, 20.0, 1e-9);  // a driver without odometry: chords
+  // The sim's odometry (which follows every bend the sparse radio poses cut) since the start.
+  r.on_status("a", "sim", status({{"odometry_m", 17.5}, {"collisions", 2}}));
+  EXPECT_NEAR(r.record().robots.at("a").length_m, 12.5, 1e-9);
+  EXPECT_EQ(r.record().robots.at("a").collisions, 2u);
   EXPECT_EQ(r.record().robots.at("a").positions_m.size(), 11u);
   EXPECT_NEAR(r.mission_time_s(), 10.0, 1e-9);
   r.on_team_message("a", "team/map", 300);
@@ -69,6 +87,22 @@ TEST(TeamRecorder, TrajectoryLengthUsesOdometryAndBytesAreCategorised) {
   EXPECT_EQ(r.record().team_bytes.at("b").at("exploration_route"), 50u);
   EXPECT_FALSE(r.record().team_bytes.contains("zz"));
   EXPECT_FALSE(r.on_pose("zz", 11.0, pose_at(0, 0, 0)));
+  EXPECT_EQ(r.record().team_messages.at("a").at("incremental_map"), 2u);
+}
+
+TEST(TeamRecorder, StatusCountersCountFromTheStart) {
+  const auto t = team();
+  TeamRecorder r(t);
+  r.on_status("b", "hlmap", status({{"gaps_detected", 2}, {"full_map_bytes", 1000}, {"supervoxels", 50}}));
+  r.start(0.0);
+  r.on_status("b", "hlmap", status({{"gaps_detected", 5}, {"full_map_bytes", 4000}, {"radio_lost", 7}}));
+  r.on_status("b", "mapping", status({{"raw_map_bytes", 90000}, {"radio_lost", 1}}));
+  const auto& track = r.record().robots.at("b");
+  EXPECT_DOUBLE_EQ(track.counter("hlmap.gaps_detected"), 3.0);
+  EXPECT_DOUBLE_EQ(track.counter("hlmap.full_map_bytes"), 3000.0);
+  EXPECT_DOUBLE_EQ(track.counter("mapping.raw_map_bytes"), 90000.0);  // first heard after the start: all of it
+  EXPECT_DOUBLE_EQ(track.counter_sum("radio_lost"), 8.0);  // every service's, summed
+  EXPECT_FALSE(track.counters.contains("hlmap.supervoxels"));  // not a counter the record keeps
 }
 
 TEST(TeamRecorder, PlanningTimeRecordedOncePerRound) {

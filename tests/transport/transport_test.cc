@@ -72,25 +72,30 @@ TEST(Transport, TypedPubSubFillsHeaderAndFiltersByPrefix) {
     EXPECT_EQ(m.header.species(), "SLUGCAT");
     EXPECT_EQ(m.header.service(), "test");
     EXPECT_EQ(m.header.payload_type(), "hexplore.v1.TestPayload");
-    EXPECT_EQ(m.header.sim_time_ns(), 42);
-    EXPECT_GT(m.header.send_time_ns(), 0);
+    EXPECT_EQ(m.header.sim_time_ns(), 42'000'000);  // milliseconds on the wire
+    EXPECT_EQ(m.header.send_time_ns(), 0);          // the radio carries no wall time
+    EXPECT_GT(m.wire_bytes, m.message.ByteSizeLong());
   });
-  sub.on<v1::TestPayload>("robot/r1/", [&](const Received<v1::TestPayload>&) { ++robot_messages; });
+  sub.on<v1::TestPayload>("robot/r1/", [&](const Received<v1::TestPayload>& m) {
+    ++robot_messages;
+    EXPECT_GT(m.header.send_time_ns(), 0);  // robot-local: wall time for the latency histogram
+  });
   EventLoop loop;
   loop.add(sub);
   handshake(pub, loop, "team/hello", [&] { return sub_acc.received("team/hello").messages > 0; });
-  pub.publish("team/map", payload(1), 42);
-  pub.publish("team/plan", payload(2), 42);
-  pub.publish("team/map", payload(3), 42);
-  pub.publish("robot/r1/scan", payload(4), 42);
-  pub.publish("robot/r3/scan", payload(5), 42);  // nobody subscribed: filtered by ZeroMQ
+  pub.publish("team/map", payload(1), 42'000'000);
+  pub.publish("team/plan", payload(2), 42'000'000);
+  pub.publish("team/map", payload(3), 42'000'000);
+  pub.publish("robot/r1/scan", payload(4), 42'000'000);
+  pub.publish("robot/r3/scan", payload(5), 42'000'000);  // nobody subscribed: filtered by ZeroMQ
   ASSERT_TRUE(loop.run_until([&] { return team_sequences.size() == 3 && robot_messages == 1; }, 5s));
   EXPECT_EQ(team_topics, (std::vector<std::string>{"team/map", "team/plan", "team/map"}));
   EXPECT_EQ(team_sequences, (std::vector<uint64_t>{1, 1, 2}));  // per-topic sequences
   EXPECT_EQ(pub.last_sequence("team/map"), 2u);
   EXPECT_EQ(sub_acc.received("team/map").messages, 2u);
   EXPECT_EQ(sub_acc.received("team/map").bytes, pub_acc.sent("team/map").bytes);
-  EXPECT_EQ(sub_acc.latency_samples("team/map"), 2u);
+  EXPECT_EQ(sub_acc.latency_samples("team/map"), 0u);  // no send time, no latency sample
+  EXPECT_EQ(sub_acc.latency_samples("robot/r1/scan"), 1u);
   EXPECT_EQ(sub_acc.received("robot/r3/scan").messages, 0u);
 }
 
@@ -144,7 +149,7 @@ TEST(Transport, BadFramesAreCountedAndDroppedWhileValidTrafficContinues) {
   auto header_frame = [](uint32_t version, const std::string& type) {
     v1::Header h = make_header(kR1, 1, type, 0);
     h.set_schema_version(version);
-    return to_frame(h);
+    return transport::header_frame(h, nullptr);
   };
   auto send = [&](std::vector<zmq::message_t> frames) {
     for (size_t i = 0; i < frames.size(); ++i)
@@ -156,7 +161,7 @@ TEST(Transport, BadFramesAreCountedAndDroppedWhileValidTrafficContinues) {
     return v;
   };
   auto valid_message = [&](uint64_t counter) {
-    send(frames(zmq::message_t(std::string("robot/r1/x")), header_frame(1, "hexplore.v1.TestPayload"),
+    send(frames(zmq::message_t(std::string("robot/r1/x")), header_frame(2, "hexplore.v1.TestPayload"),
                 to_frame(payload(counter))));
   };
   for (int i = 0; i < 500 && valid.empty(); ++i) {
@@ -168,26 +173,32 @@ TEST(Transport, BadFramesAreCountedAndDroppedWhileValidTrafficContinues) {
 
   const std::string topic = "robot/r1/x";
   valid_message(1);
-  send(frames(zmq::message_t(topic), header_frame(1, "hexplore.v1.TestPayload")));  // truncated: 2 frames
+  send(frames(zmq::message_t(topic), header_frame(2, "hexplore.v1.TestPayload")));  // truncated: 2 frames
   valid_message(2);
-  send(frames(zmq::message_t(topic), zmq::message_t(std::string("\xff\xff\xff garbage")),
-              to_frame(payload(9))));  // unparsable header
+  send(frames(zmq::message_t(topic), zmq::message_t(std::string("\x41\x01\x02\xff\xff garbage")),
+              to_frame(payload(9))));  // version 2, named sender whose name runs off the frame
   send(frames(zmq::message_t(topic), header_frame(7, "hexplore.v1.TestPayload"), to_frame(payload(9))));  // version
+  {
+    // A v1 (protobuf) header: what an old build sends.
+    v1::Header old = make_header(kR1, 1, "hexplore.v1.TestPayload", 0);
+    old.set_schema_version(1);
+    send(frames(zmq::message_t(topic), to_frame(old), to_frame(payload(9))));
+  }
   valid_message(3);
-  send(frames(zmq::message_t(topic), header_frame(1, "hexplore.v1.TestPayload"),
+  send(frames(zmq::message_t(topic), header_frame(2, "hexplore.v1.TestPayload"),
               to_frame(payload(9, 1500))));  // oversize for this subscriber
-  send(frames(zmq::message_t(topic), header_frame(1, "hexplore.v1.RobotPose"), to_frame(payload(9))));  // wrong type
-  send(frames(zmq::message_t(topic), header_frame(1, "hexplore.v1.TestPayload"),
+  send(frames(zmq::message_t(topic), header_frame(2, "hexplore.v1.RobotPose"), to_frame(payload(9))));  // wrong type
+  send(frames(zmq::message_t(topic), header_frame(2, "hexplore.v1.TestPayload"),
               zmq::message_t(std::string("\x0a\xff\xff\xff"))));  // payload does not parse
-  send(frames(zmq::message_t(std::string("robot/r1/bad topic")), header_frame(1, "hexplore.v1.TestPayload"),
+  send(frames(zmq::message_t(std::string("robot/r1/bad topic")), header_frame(2, "hexplore.v1.TestPayload"),
               to_frame(payload(9))));  // invalid topic
-  send(frames(zmq::message_t(topic), header_frame(1, "hexplore.v1.TestPayload"), to_frame(payload(9)),
+  send(frames(zmq::message_t(topic), header_frame(2, "hexplore.v1.TestPayload"), to_frame(payload(9)),
               zmq::message_t(std::string("extra"))));  // 4 frames
   valid_message(4);
   ASSERT_TRUE(loop.run_until([&] { return valid.size() == 4; }, 5s));
   EXPECT_EQ(valid, (std::vector<uint64_t>{1, 2, 3, 4}));
   EXPECT_EQ(acc.dropped(DropReason::kMalformed), 5u);  // truncated, header, payload, topic, 4 frames
-  EXPECT_EQ(acc.dropped(DropReason::kWrongVersion), 1u);
+  EXPECT_EQ(acc.dropped(DropReason::kWrongVersion), 2u);
   EXPECT_EQ(acc.dropped(DropReason::kOversize), 1u);
   EXPECT_EQ(acc.dropped(DropReason::kWrongType), 1u);
 }
