@@ -140,9 +140,10 @@ Raster topdown_map(const ExperimentRecord& record, int width, int height) {
   const std::pair<const char*, Rgb> states[] = {{"has_view", {230, 140, 0}},  {"given_up", {150, 0, 150}},
                                                 {"no_viewpoint", {0, 150, 150}}, {"occluded", {0, 90, 200}},
                                                 {"unreachable", {120, 120, 0}}, {"unassignable", {200, 0, 0}}};
-  if (!record.open_targets.empty()) {
-    const std::string& reporter = record.open_targets.front().robot;
-    for (const auto& t : record.open_targets) {
+  const std::vector<OpenTargetRow> open = record.latest_open_targets();
+  if (!open.empty()) {
+    const std::string& reporter = open.front().robot;
+    for (const auto& t : open) {
       if (t.robot != reporter) continue;
       for (const auto& [name, colour] : states)
         if (t.state == name) r.fill_rect(px(t.center.x()) - 2, py(t.center.y()) - 2, px(t.center.x()) + 2,

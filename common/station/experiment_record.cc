@@ -1,5 +1,8 @@
 #include "common/station/experiment_record.h"
 
+#include <algorithm>
+#include <map>
+
 namespace hexplore::station {
 
 double RobotTrack::counter(const std::string& key) const {
@@ -24,6 +27,15 @@ double ExperimentRecord::accumulated_completeness() const {
 
 double ExperimentRecord::final_team_completeness() const {
   return completeness.empty() ? 0.0 : completeness.back().team;
+}
+
+std::vector<OpenTargetRow> ExperimentRecord::latest_open_targets() const {
+  std::map<std::string, double> last;
+  for (const auto& t : open_targets) last[t.robot] = std::max(last[t.robot], t.sim_time_s);
+  std::vector<OpenTargetRow> out;
+  for (const auto& t : open_targets)
+    if (t.sim_time_s == last[t.robot]) out.push_back(t);
+  return out;
 }
 
 }  // namespace hexplore::station

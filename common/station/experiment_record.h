@@ -46,6 +46,7 @@ inline const std::vector<std::string>& communication_categories() {
 // One coverage target (ISE supervoxel) still open at the end, as one robot's planner saw it
 // (planning::OpenTarget, in plain data).
 struct OpenTargetRow {
+  double sim_time_s = 0.0;  // when the robot's planner reported it
   std::string robot;
   uint64_t key = 0;
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
@@ -74,7 +75,10 @@ struct ExperimentRecord {
   // Top-down picture input: occupied voxel centres of the union map at the end.
   std::vector<Eigen::Vector3f> final_map_points_m;
   // Why exploration was not finished: each live planner's open targets at the end.
+  // Every open-target report of the mission (periodic ones and the final one), in order.
   std::vector<OpenTargetRow> open_targets;
+  // The rows of each robot's latest report (what was still open at the end).
+  std::vector<OpenTargetRow> latest_open_targets() const;
 
   // Sum over robots of their final completeness (paper: lower = less overlap... at equal team completeness).
   double accumulated_completeness() const;

@@ -71,7 +71,7 @@ void write_text(const std::filesystem::path& path, const std::string& text, std:
 std::string open_targets_json(const ExperimentRecord& r) {
   std::map<std::string, std::map<std::string, int>> by_state, by_gap;
   std::map<std::string, int> total;
-  for (const auto& t : r.open_targets) {
+  for (const auto& t : r.latest_open_targets()) {
     ++total[t.robot];
     ++by_state[t.robot][t.state];
     ++by_gap[t.robot][t.gap];
@@ -176,9 +176,9 @@ std::vector<std::string> write_results(const ExperimentRecord& r, const std::str
   write_text(root / "planning.csv", p.str(), written);
 
   std::ostringstream o;
-  o << "robot,key,x_m,y_m,z_m,facade,voxels,covered_voxels,gap,state,attempts\n";
+  o << "sim_time_s,robot,key,x_m,y_m,z_m,facade,voxels,covered_voxels,gap,state,attempts\n";
   for (const auto& t : r.open_targets)
-    o << t.robot << "," << t.key << "," << number(t.center.x()) << "," << number(t.center.y()) << ","
+    o << number(t.sim_time_s) << "," << t.robot << "," << t.key << "," << number(t.center.x()) << "," << number(t.center.y()) << ","
       << number(t.center.z()) << "," << (t.facade ? 1 : 0) << "," << t.voxels << "," << t.covered_voxels << ","
       << t.gap << "," << t.state << "," << t.attempts << "\n";
   write_text(root / "open_targets.csv", o.str(), written);

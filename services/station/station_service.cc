@@ -101,6 +101,7 @@ StationOptions StationOptions::from_arguments(const std::map<std::string, std::s
   o.start_wait_s = parse_double(args, "start-wait-s", o.start_wait_s);
   o.settle_s = parse_double(args, "settle-s", o.settle_s);
   o.progress_period_s = parse_double(args, "progress-period-s", o.progress_period_s);
+  o.open_targets_period_s = parse_double(args, "open-targets-period-s", o.open_targets_period_s);
   o.autostart = parse_bool(args, "autostart", o.autostart);
   o.observable = parse_bool(args, "observable", o.observable);
   return o;
@@ -201,6 +202,11 @@ void StationService::tick() {
     last_snapshot_s_ = t;
     request_snapshots();
   }
+  if (options_.open_targets_period_s > 0 && t - last_open_targets_s_ >= options_.open_targets_period_s &&
+      reports_pending_ == 0) {
+    last_open_targets_s_ = t;
+    request_open_targets();
+  }
   if (t - last_progress_s_ >= options_.progress_period_s) {
     last_progress_s_ = t;
     print_progress();
@@ -244,6 +250,7 @@ void StationService::request_open_targets() {
               if (reply == nullptr) return;  // a robot that is gone has no report
               for (const v1::OpenTarget& t : reply->message.targets()) {
                 OpenTargetRow row;
+                row.sim_time_s = recorder_->mission_time_s();
                 row.robot = id;
                 row.key = t.key();
                 row.center = {t.center_m().x(), t.center_m().y(), t.center_m().z()};

@@ -28,6 +28,9 @@ struct StationOptions {
   bool observable = true;           // compute the observable-completeness mask
   double settle_s = 5.0;            // see MissionMonitorOptions
   double progress_period_s = 5.0;   // progress line on stdout
+  // How often each planner is asked why its targets are open (open_targets.csv); 0: only
+  // at the end of the mission.
+  double open_targets_period_s = 0.0;
 
   // From the service's "--name value" arguments; throws core::ConfigError on a bad value.
   static StationOptions from_arguments(const std::map<std::string, std::string>& arguments);
@@ -82,6 +85,7 @@ class StationService : public service::Service {
   double loop_s() const { return core::ns_to_s(context_->now_ns()); }
   double last_snapshot_s_ = -1e9;
   double last_progress_s_ = -1e9;
+  double last_open_targets_s_ = 0.0;
   int snapshots_pending_ = 0;
   int reports_pending_ = 0;
   bool finished_ = false;

@@ -46,9 +46,11 @@ ExperimentRecord sample_record(uint64_t seed, double time_s, double final_comple
                             {"hlmap.radio_out_of_range", 40}, {"sim.radio_out_of_range", 5}};
   r.planning_times_s["a"] = {0.05, 0.07};
   r.final_map_points_m = {{0, 0, 0}, {5, 5, 3}, {9, 1, 1}};
-  r.open_targets = {{"a", 7, {1, 2, 3}, true, 40, 30, "density", "has_view", 1},
-                    {"a", 9, {2, 2, 0}, false, 20, 5, "angle", "given_up", 2},
-                    {"b", 7, {1, 2, 3}, true, 40, 30, "density", "has_view", 0}};
+  // An earlier periodic report of "a" (left out of the summary's counts), then the final ones.
+  r.open_targets = {{50, "a", 5, {4, 4, 1}, true, 10, 0, "no_normal", "occluded", 0},
+                    {100, "a", 7, {1, 2, 3}, true, 40, 30, "density", "has_view", 1},
+                    {100, "a", 9, {2, 2, 0}, false, 20, 5, "angle", "given_up", 2},
+                    {100.5, "b", 7, {1, 2, 3}, true, 40, 30, "density", "has_view", 0}};
   return r;
 }
 
@@ -74,7 +76,8 @@ TEST(ResultsWriter, WritesEveryFile) {
             std::string::npos)
       << summary;
   const auto open = slurp(dir / "open_targets.csv");
-  EXPECT_NE(open.find("a,9,2,2,0,0,20,5,angle,given_up,2"), std::string::npos) << open;
+  EXPECT_NE(open.find("100,a,9,2,2,0,0,20,5,angle,given_up,2"), std::string::npos) << open;
+  EXPECT_NE(open.find("50,a,5,4,4,1,1,10,0,no_normal,occluded,0"), std::string::npos) << "every report is listed";
   const auto comm = slurp(dir / "communication.csv");
   EXPECT_NE(comm.find("robot,category,messages,cumulative_kb,average_kb_per_s\n"), std::string::npos) << comm;
   EXPECT_NE(comm.find("a,incremental_map,100,10,0.1"), std::string::npos) << comm;
