@@ -27,6 +27,10 @@ struct RobotTrack {
   double length_m = 0.0;
   uint32_t collisions = 0;
   std::string last_state;
+  // Longest stretch of sim time the driver reported BLOCKED without a break (from its poses'
+  // motion states), and when the current stretch began (-1: not blocked now).
+  double longest_blocked_s = 0.0;
+  double blocked_since_s = -1.0;
 };
 
 // The communication categories the paper reports; bytes on the matching team topic.

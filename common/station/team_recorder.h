@@ -1,6 +1,6 @@
 #pragma once
-// Turns what the station hears on the team topics into an ExperimentRecord: trajectories from
-// team/pose, communication volume per category from the size of every team message, planning
+// Turns what the station hears on the team topics into an ExperimentRecord: trajectories and
+// the longest BLOCKED stretch per robot from team/pose, communication volume per category from the size of every team message, planning
 // rounds from the planners' statuses. Pure bookkeeping; the station service feeds it.
 
 #include <cstddef>
