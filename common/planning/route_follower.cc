@@ -23,6 +23,7 @@ constexpr double kProgressM = 0.5;    // moving this far counts as progress
 constexpr double kTrailStepM = 0.5;   // trail points are this far apart
 constexpr size_t kTrailLength = 12;
 constexpr double kBackoffM = 1.0;     // back off to a trail point at least this far away
+constexpr double kBackedOffM = 0.3;   // the back-off leg ends this close to its point
 
 }  // namespace
 
@@ -61,6 +62,8 @@ void RouteFollower::clear() {
   route_.clear();
   next_ = 0;
   driving_ = false;
+  backing_off_ = false;
+  backoff_.reset();
   observing_ = false;
   progress_s_ = -1.0;
 }
@@ -86,6 +89,17 @@ std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector
     const double per_aim = (observe_until_s_ - observe_start_s_) / double(aims_.size());
     const size_t index = std::min(aims_.size() - 1, size_t((now_s - observe_start_s_) / per_aim));
     return index != aim_index_ ? aim(index, position) : std::nullopt;
+  }
+  if (backing_off_) {
+    // The back-off leg ends at its point, or where it cannot go on (blocked there too, or no
+    // progress); the path to the next view is planned from wherever that is.
+    const bool there = horizontal(*backoff_, position) <= kBackedOffM;
+    const bool blocked = blocked_since_s_ >= 0.0 && now_s - blocked_since_s_ >= options_.blocked_s;
+    const bool stuck = progress_s_ >= 0.0 && now_s - progress_s_ >= options_.stuck_s;
+    if (!there && !blocked && !stuck) return std::nullopt;
+    backing_off_ = false;
+    backoff_.reset();
+    return drive(position, map, keep_off, ledger);
   }
   if (next_ >= route_.size()) return std::nullopt;
   if (driving_ && !open_view(route_[next_], map, ledger)) {
@@ -169,6 +183,22 @@ void RouteFollower::finish_observing(double now_s, const Eigen::Vector3d& positi
 std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
                                                 const std::unordered_set<uint64_t>& keep_off,
                                                 const GiveUpLedger& ledger) {
+  if (backoff_) {
+    // Leave the spot we are stuck at first, as a leg of its own: prepended to the next path,
+    // the back-off point was dropped downstream whenever that path passed right by the robot
+    // (the safety layer drives on from the nearest point of a path; office scene, seed 1:
+    // mr1000a drove into the same door jamb again and again).
+    backing_off_ = true;
+    driving_ = false;
+    progress_pos_ = position;
+    progress_s_ = last_step_s_;
+    blocked_since_s_ = -1.0;
+    MotionOrder out;
+    out.path.valid = true;
+    out.path.waypoints = {*backoff_};
+    out.path.goal.position = *backoff_;
+    return out;
+  }
   std::unordered_set<uint64_t> avoid = avoid_;
   avoid.insert(keep_off.begin(), keep_off.end());
   const size_t first = next_;
@@ -186,10 +216,6 @@ std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position,
     }
     path_keys_ = path.keys;
     path_points_ = path.waypoints;
-    if (backoff_) {
-      path.waypoints.insert(path.waypoints.begin(), *backoff_);
-      backoff_.reset();
-    }
     driving_ = true;
     progress_pos_ = position;
     progress_s_ = last_step_s_;
@@ -203,14 +229,7 @@ std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position,
     return drive(position, map, keep_off, ledger);
   }
   driving_ = false;
-  if (!backoff_) return std::nullopt;
-  // Nowhere to go from here on the graph: at least leave the spot we are stuck at.
-  MotionOrder out;
-  out.path.valid = true;
-  out.path.waypoints = {*backoff_};
-  out.path.goal.position = *backoff_;
-  backoff_.reset();
-  return out;
+  return std::nullopt;
 }
 
 void RouteFollower::skip_current(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
@@ -248,7 +267,7 @@ void RouteFollower::track_progress(double now_s, const Eigen::Vector3d& position
     trail_.push_back(position);
     if (trail_.size() > kTrailLength) trail_.erase(trail_.begin());
   }
-  if (!driving_ || progress_s_ < 0.0 || horizontal(position, progress_pos_) > kProgressM) {
+  if (!(driving_ || backing_off_) || progress_s_ < 0.0 || horizontal(position, progress_pos_) > kProgressM) {
     progress_pos_ = position;
     progress_s_ = now_s;
     blocked_seen_ = false;

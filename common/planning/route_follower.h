@@ -9,8 +9,9 @@
 // targets got complete is judged a settle time later, when the map has caught up with the
 // scans, and what stayed incomplete counts as an attempt in the team's GiveUpLedger.
 // When the robot is blocked or makes no progress, the view is skipped (an attempt too), the
-// vertex it could not reach is kept off by later paths, and the next path first backs off
-// along the robot's recent trail. No sockets: the planning service feeds it poses and the
+// vertex it could not reach is kept off by later paths, and the robot first backs off along
+// its recent trail (a leg of its own, to a trail point at least 1 m back) before the path to
+// the next view is planned from there. No sockets: the planning service feeds it poses and the
 // map and publishes what it returns.
 
 #include <cstdint>
@@ -124,6 +125,7 @@ class RouteFollower {
   bool blocked_seen_ = false;
   std::vector<Eigen::Vector3d> trail_;
   std::optional<Eigen::Vector3d> backoff_;
+  bool backing_off_ = false;  // the order sent is the back-off leg to *backoff_
   std::unordered_set<uint64_t> avoid_;
   std::vector<uint64_t> path_keys_;
   std::vector<Eigen::Vector3d> path_points_;

@@ -12,6 +12,9 @@ namespace hexplore::safety {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// A give-way that led nowhere rules out spots within this angle of its direction: whatever
+// stopped the robot (a wall, a table) is most likely in the way of those too.
+constexpr double kFailedConeRad = 50.0 * M_PI / 180.0;
 
 // Priority of a robot at a conflict: earlier arrival window first, then the lower id. A total
 // order, so three or more robots at one crossing can never wait for each other in a cycle.
@@ -47,6 +50,7 @@ void SafetyOptions::validate() const {
   require_positive(stop_buffer_m, "stop_buffer_m", true);
   require_positive(min_move_m, "min_move_m");
   require_positive(sample_step_m, "sample_step_m");
+  require_positive(give_way_timeout_s, "give_way_timeout_s");
 }
 
 ConflictResolver::ConflictResolver(std::string robot_id, const Eigen::Vector3d& body_half_extents_m,
@@ -62,6 +66,8 @@ ConflictResolver::ConflictResolver(std::string robot_id, const Eigen::Vector3d& 
 void ConflictResolver::reset() {
   yields_.clear();
   give_way_to_.clear();
+  give_way_approved_ = false;
+  failed_give_way_dirs_.clear();
   wanted_near_.clear();
   conflicting_.clear();
   stationary_ = true;
@@ -95,7 +101,11 @@ std::optional<Eigen::Vector3d> ConflictResolver::find_room(const Eigen::Vector3d
   for (double distance = 1.0; distance <= 4.0 + 1e-9; distance += 0.5) {
     for (int k = 0; k < 16; ++k) {
       const double angle = 2.0 * M_PI * k / 16.0;
-      const Eigen::Vector3d spot = position + distance * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
+      const Eigen::Vector2d dir(std::cos(angle), std::sin(angle));
+      const bool failed_before = std::any_of(failed_give_way_dirs_.begin(), failed_give_way_dirs_.end(),
+                                             [&](const Eigen::Vector2d& f) { return dir.dot(f) > std::cos(kFailedConeRad); });
+      if (failed_before) continue;
+      const Eigen::Vector3d spot = position + distance * Eigen::Vector3d(dir.x(), dir.y(), 0.0);
       bool ok = true;
       for (const auto& w : wanted) ok = ok && distance_xy(w.point, spot) > clear;
       if (!ok) continue;
@@ -120,6 +130,8 @@ Decision ConflictResolver::stop(std::string reason, std::string yielding_to) {
 
 Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& desired_path, double speed_mps,
                                   const std::vector<Fragment>& peers_in, double now_s) {
+  const double since_last_s = std::max(0.0, now_s - last_decide_s_);
+  last_decide_s_ = now_s;
   std::vector<const Fragment*> peers;
   for (const auto& p : peers_in) {
     if (p.robot_id != robot_id_) peers.push_back(&p);
@@ -152,6 +164,7 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
     yields_.clear();
     conflicting_.clear();
     was_detoured_ = false;
+    give_way_approved_ = false;
     return stop(desired_path.empty() ? "no path" : "at goal", "");
   }
 
@@ -187,15 +200,34 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
   if (!give_way_to_.empty()) {
     const auto it = std::find_if(peers.begin(), peers.end(), [&](const Fragment* p) { return p->robot_id == give_way_to_; });
     // Step aside all the way first: released halfway, the robot would stand in the way again.
-    const bool at_spot = distance_xy(position, give_way_spot_) < options_.min_move_m;
-    if (it == peers.end() || (at_spot && (*it)->yielding_to != robot_id_)) give_way_to_.clear();
+    const double to_spot = distance_xy(position, give_way_spot_);
+    const bool at_spot = to_spot < options_.min_move_m;
+    // Driven towards the spot without getting closer (the driver is blocked: the spot, chosen
+    // without a map, is out of reach): give it up. Time spent stopped for a teammate does not count.
+    if (to_spot < give_way_best_m_ - options_.min_move_m) {
+      give_way_best_m_ = to_spot;
+      give_way_stalled_s_ = 0.0;
+    } else if (give_way_approved_) {
+      give_way_stalled_s_ += since_last_s;
+    }
+    if (it == peers.end() || (at_spot && (*it)->yielding_to != robot_id_)) {
+      give_way_to_.clear();
+    } else if (!at_spot && give_way_stalled_s_ >= options_.give_way_timeout_s) {
+      failed_give_way_dirs_.push_back((give_way_spot_ - position).head<2>().normalized());
+      give_way_to_.clear();
+      ++counters_.give_ways_abandoned;
+    }
   }
+  // A standoff is over once nothing blocks this robot: failed directions are forgotten.
+  if (give_way_to_.empty() && !detour.blocked) failed_give_way_dirs_.clear();
   if (give_way_to_.empty() && detour.blocked) {
     const auto it = std::find_if(peers.begin(), peers.end(), [&](const Fragment* p) { return p->robot_id == detour.blocked_by; });
     if (it != peers.end() && (*it)->stationary && (*it)->yielding_to == robot_id_ && (*it)->robot_id < robot_id_) {
       if (auto spot = find_room(position, **it, boxes)) {
         give_way_to_ = (*it)->robot_id;
         give_way_spot_ = *spot;
+        give_way_best_m_ = distance_xy(position, *spot);
+        give_way_stalled_s_ = 0.0;
         ++counters_.give_ways;
       }
     }
@@ -341,6 +373,7 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
     reason = "blocked by stationary robot " + detour.blocked_by;
     yielding_to = detour.blocked_by;  // waits for it: lets wait cycles be seen by everyone
   }
+  give_way_approved_ = !giving_way_to.empty() && path_length(approved) >= options_.min_move_m;
   if (path_length(approved) < options_.min_move_m) {
     if (reason.empty()) reason = "no room to move";
     Decision d = stop(std::move(reason), yielding_to);

@@ -6,7 +6,10 @@
 // Nobody waits forever: a circle of robots waiting for each other lets its lowest id go; a
 // robot blocked by this one's box makes this one go first; a yield to a robot that stopped for
 // reasons of its own ends after a timeout; and of two robots blocking each other, the higher
-// id steps aside.
+// id steps aside. The safety layer has no map, so the spot it steps aside to may be out of
+// reach (behind a wall, under a table): a give-way that gets no closer to its spot while
+// approved for give_way_timeout_s is abandoned, and the next spot is sought in another
+// direction.
 
 #include <cstdint>
 #include <map>
@@ -38,6 +41,7 @@ struct SafetyOptions {
   double stop_buffer_m = 0.1;        // yielding robots stop this far before the zone
   double min_move_m = 0.05;          // shorter approved paths are a Stop
   double sample_step_m = 0.1;        // path sampling for conflict search
+  double give_way_timeout_s = 3.0;   // a give-way approved this long without getting closer is abandoned
 
   // Throws std::invalid_argument naming the first bad field.
   void validate() const;
@@ -62,6 +66,7 @@ struct ResolverCounters {
   uint64_t deadlock_breaks = 0;      // yields ended by the wait-cycle or timeout rules
   uint64_t blocked = 0;              // decisions cut short before an impassable box
   uint64_t give_ways = 0;            // times this robot stepped aside for a blocked teammate
+  uint64_t give_ways_abandoned = 0;  // give-ways whose spot proved out of reach (no progress)
 };
 
 class ConflictResolver {
@@ -92,7 +97,8 @@ class ConflictResolver {
   };
 
   Decision stop(std::string reason, std::string yielding_to);
-  // A spot 1-4 m away, clear of `blocked`'s wanted path and reachable in a straight line.
+  // A spot 1-4 m away, clear of `blocked`'s wanted path and reachable in a straight line,
+  // not in a direction a give-way of this standoff already failed in.
   std::optional<Eigen::Vector3d> find_room(const Eigen::Vector3d& position, const Fragment& blocked,
                                            const std::vector<ObstacleBox>& boxes) const;
   // Follows "waits for" from `first` through the peers; when the chain leads back to this
@@ -114,6 +120,11 @@ class ConflictResolver {
   double progress_s_ = 0.0;                     // arc length reached along it
   std::string give_way_to_;                     // teammate this robot is making room for
   Eigen::Vector3d give_way_spot_ = Eigen::Vector3d::Zero();
+  double give_way_best_m_ = 0.0;                // closest the robot came to the spot
+  double give_way_stalled_s_ = 0.0;             // time approved towards it without getting closer
+  bool give_way_approved_ = false;              // the last decision drove towards the spot
+  std::vector<Eigen::Vector2d> failed_give_way_dirs_;  // unit directions that led nowhere
+  double last_decide_s_ = 0.0;
   Decision last_;
   ResolverCounters counters_;
 };

@@ -34,6 +34,10 @@ struct RobotTrack {
   // Sum of the counters named `value` over every service ("radio_lost").
   double counter_sum(const std::string& value) const;
   double counter(const std::string& key) const;
+  // Longest stretch of sim time the driver reported BLOCKED without a break (from its poses'
+  // motion states), and when the current stretch began (-1: not blocked now).
+  double longest_blocked_s = 0.0;
+  double blocked_since_s = -1.0;
 };
 
 // The communication categories the paper reports; bytes on the matching team topic.

@@ -117,6 +117,7 @@ std::string summary_json(const ExperimentRecord& r) {
   for (const auto& [id, track] : r.robots) {
     j << (first ? "\n" : ",\n") << "    " << quoted(id) << ": {\"species\": " << quoted(track.species)
       << ", \"trajectory_length_m\": " << number(track.length_m) << ", \"collisions\": " << track.collisions
+      << ", \"longest_blocked_s\": " << number(track.longest_blocked_s)
       << ", \"final_completeness\": "
       << number(r.completeness.empty() || !r.completeness.back().per_robot.contains(id)
                     ? 0.0
@@ -191,7 +192,7 @@ std::vector<std::string> write_results(const ExperimentRecord& r, const std::str
 }
 
 std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs) {
-  std::vector<double> time, completeness, observable, accumulated, length, planning, kbps, wall;
+  std::vector<double> time, completeness, observable, accumulated, length, planning, kbps, wall, blocked;
   // Per robot, as the paper reports them: each category's rate, the three map strategies,
   // and the map re-sync totals of the team.
   std::map<std::string, std::vector<double>> category_rate, strategy_rate;
@@ -222,6 +223,9 @@ std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs) {
     double total_length = 0.0;
     for (const auto& [_, track] : r.robots) total_length += track.length_m;
     length.push_back(total_length);
+    double longest_blocked = 0.0;
+    for (const auto& [_, track] : r.robots) longest_blocked = std::max(longest_blocked, track.longest_blocked_s);
+    blocked.push_back(longest_blocked);
     planning.push_back(mean(all_planning_times(r)));
     kbps.push_back(static_cast<double>(team_bytes_total(r)) / 1024.0 / std::max(r.exploration_time_s, 1e-9));
     wall.push_back(r.wall_time_s);
@@ -248,7 +252,8 @@ std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs) {
     << stat("accumulated_completeness", accumulated, false) << stat("total_trajectory_length_m", length, false)
     << stat("mean_planning_time_s", planning, false) << stat("team_kb_per_s", kbps, false)
     << stat("collisions", collisions, false) << stat("map_gaps_detected", gaps_detected, false)
-    << stat("map_gaps_repaired", gaps_repaired, false);
+    << stat("map_gaps_repaired", gaps_repaired, false)
+    << stat("longest_blocked_s", blocked, false);
   j << "  \"robot_kb_per_s_by_category\": {\n";
   for (const auto& category : communication_categories())
     j << "  " << stat(category.c_str(), category_rate[category], category == communication_categories().back());

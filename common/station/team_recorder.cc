@@ -48,6 +48,8 @@ void TeamRecorder::start(double sim_time_s) {
     track.times_s.clear();
     track.positions_m.clear();
     track.length_m = 0.0;
+    track.longest_blocked_s = 0.0;
+    track.blocked_since_s = -1.0;
   }
   chord_length_m_.clear();
   for (auto& [robot, counters] : counters_)
@@ -75,6 +77,12 @@ bool TeamRecorder::on_pose(const std::string& robot, double sim_time_s, const v1
   const Eigen::Vector3d p(pose.pose().position_m().x(), pose.pose().position_m().y(), pose.pose().position_m().z());
   if (!p.allFinite()) return false;
   const double t = sim_time_s - *start_s_;
+  if (pose.state() == v1::MOTION_STATE_BLOCKED) {
+    if (track.blocked_since_s < 0.0) track.blocked_since_s = t;
+    track.longest_blocked_s = std::max(track.longest_blocked_s, t - track.blocked_since_s);
+  } else {
+    track.blocked_since_s = -1.0;
+  }
   if (track.positions_m.empty()) {
     track.positions_m.push_back(p);
     track.times_s.push_back(t);

@@ -1,7 +1,7 @@
 #pragma once
-// Turns what the station hears into an ExperimentRecord: trajectories from team/pose,
-// communication volume per category from the size of every team message, planning rounds from
-// the planners' statuses, and the counters the services report in their statuses (odometry and
+// Turns what the station hears into an ExperimentRecord: trajectories and the longest BLOCKED
+// stretch per robot from team/pose, communication volume per category from the size of every
+// team message, planning rounds from the planners' statuses, and the counters the services report in their statuses (odometry and
 // collisions, map sync, what the other map strategies would have sent, radio drops) as
 // increases since the start. Pure bookkeeping; the station service feeds it.
 

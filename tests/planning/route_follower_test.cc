@@ -172,12 +172,62 @@ TEST(RouteFollower, BlockedOnTheWaySkipsTheViewBacksOffAndCountsAnAttempt) {
   for (int i = 0; i < 20 && !order; ++i, t += 0.2)
     order = f.step(t, {4.0, 1.5, 0}, DriveState::kBlocked, d.map, d.keep_off, d.ledger);
   ASSERT_TRUE(order);
-  EXPECT_EQ(order->path.goal.ground_key, next.ground_key);
-  // The path first backs off along the trail, at least a metre.
+  // It first backs off along the trail, at least a metre.
+  ASSERT_EQ(order->path.waypoints.size(), 1u);
   EXPECT_GE((order->path.waypoints.front() - Eigen::Vector3d(4.0, 1.5, 0)).head<2>().norm(), 1.0 - 1e-9);
   EXPECT_LT(order->path.waypoints.front().x(), 4.0);
   EXPECT_EQ(f.counters().views_skipped, 1);
   EXPECT_EQ(d.ledger.attempts(kWall), 1);
+  // Backed off: on to the next view.
+  const Eigen::Vector3d back = order->path.waypoints.front();
+  const auto on = f.step(t + 3.0, back, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(on);
+  EXPECT_EQ(on->path.goal.ground_key, next.ground_key);
+}
+
+TEST(RouteFollower, BacksOffAsALegOfItsOwnThenPlansTheNextPathFromThere) {
+  // Blocked short of a view whose way on passes right where the robot stands (the office
+  // scene's door: every view lay beyond it). Prepended to that path, the back-off point was
+  // dropped by the safety layer, which drives on from the path's nearest point: the robot
+  // drove into the same jamb again and again. The back-off must be an order of its own.
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView first = view_at(d.map, {10.5, 1.5, 0}, true);
+  const TaskView beyond = view_at(d.map, {10.5, 3.5, 0}, false);
+  f.set_route({first, beyond});
+  double t = 0.0;
+  for (double x = 1.5; x <= 5.0; x += 0.25, t += 0.5)
+    f.step(t, {x, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  const Eigen::Vector3d stuck(5.0, 1.5, 0);
+  std::optional<MotionOrder> order;
+  for (int i = 0; i < 20 && !order; ++i, t += 0.2) order = f.step(t, stuck, DriveState::kBlocked, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(order);
+  ASSERT_EQ(order->path.waypoints.size(), 1u) << "the back-off came with more path after it";
+  const Eigen::Vector3d back = order->path.waypoints.front();
+  EXPECT_LT(back.x(), stuck.x() - 1.0 + 1e-9);
+  EXPECT_NE(order->path.goal.ground_key, beyond.ground_key);
+  // On the way back: no new order; the leg is not cut short by a report of the old block.
+  EXPECT_FALSE(f.step(t, stuck, DriveState::kBlocked, d.map, d.keep_off, d.ledger));
+  EXPECT_FALSE(f.step(t + 1.0, {4.5, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger));
+  // There: the path to the next view starts where the robot backed off to.
+  const auto on = f.step(t + 3.0, back, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(on);
+  EXPECT_EQ(on->path.goal.ground_key, beyond.ground_key);
+  EXPECT_LT((on->path.waypoints.front() - back).head<2>().norm(), 1.0);
+  // A back-off that is itself blocked ends after the blocked time, and the path is planned from there.
+  RouteFollower g(d.options, 0);
+  g.set_route({first, beyond});
+  t = 0.0;
+  for (double x = 1.5; x <= 5.0; x += 0.25, t += 0.5)
+    g.step(t, {x, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  std::optional<MotionOrder> back_order;
+  for (int i = 0; i < 20 && !back_order; ++i, t += 0.2)
+    back_order = g.step(t, stuck, DriveState::kBlocked, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(back_order);
+  std::optional<MotionOrder> after;
+  for (int i = 0; i < 20 && !after; ++i, t += 0.2) after = g.step(t, stuck, DriveState::kBlocked, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(after);
+  EXPECT_EQ(after->path.goal.ground_key, beyond.ground_key);
 }
 
 TEST(RouteFollower, ADwellEndsAsSoonAsItsTargetsAreComplete) {

@@ -179,6 +179,55 @@ TEST(Resolver, HigherIdStepsAsideForALowerIdItBlocksWhileBlockedByIt) {
   EXPECT_EQ(a_resolver.counters().give_ways, 0u);
 }
 
+TEST(Resolver, GiveWayToASpotOutOfReachIsAbandonedForAnotherDirection) {
+  // The map-less safety layer picked a spot behind something the body cannot pass (in the
+  // single-building run: under a low obstacle 0.75 m north of slugcat1): the driver is blocked
+  // and the robot never gets closer. The give-way must end and look elsewhere, not hold the
+  // robot there for good, ignoring every path planning sends.
+  ConflictResolver b("b", kHalf, SafetyOptions{});
+  const Path plan{V(2.5, 0, 0), V(0, 0, 0)};
+  Fragment a = standing("a", V(0, 0, 0), "b");
+  a.waypoints_m = {V(2.5, 0, 0)};
+  const auto first = b.decide(plan[0], plan, 0.5, {a}, 0.0);
+  ASSERT_NE(first.reason.find("giving way to a"), std::string::npos);
+  const V spot1 = first.waypoints.back();
+  // It gets 0.3 m on the way, then stands blocked.
+  const V stuck = plan[0] + 0.3 * (spot1 - plan[0]).normalized();
+  Decision d = first;
+  double t = 0.0;
+  for (; t < 10.0 && d.waypoints.back().isApprox(spot1); t += 0.2) d = b.decide(t < 0.6 ? plan[0] : stuck, plan, 0.5, {a}, t);
+  EXPECT_LE(t, 0.6 + SafetyOptions{}.give_way_timeout_s + 0.5) << "still heading for the unreachable spot";
+  EXPECT_EQ(b.counters().give_ways_abandoned, 1u);
+  ASSERT_EQ(d.kind, DecisionKind::kFollow);
+  EXPECT_NE(d.reason.find("giving way to a"), std::string::npos);  // the standoff still needs room
+  const Eigen::Vector2d dir1 = (spot1 - stuck).head<2>().normalized();
+  const Eigen::Vector2d dir2 = (d.waypoints.back() - stuck).head<2>().normalized();
+  EXPECT_LT(dir1.dot(dir2), std::cos(50.0 * M_PI / 180.0));  // a different direction
+  EXPECT_EQ(b.counters().give_ways, 2u);
+}
+
+TEST(Resolver, GiveWayWaitingForAMovingTeammateIsNotAbandoned) {
+  // Stopped on the way to the spot by a yield (time that is nobody's fault) is not "no progress".
+  ConflictResolver b("b", kHalf, SafetyOptions{});
+  const Path plan{V(2.5, 0, 0), V(0, 0, 0)};
+  Fragment a = standing("a", V(0, 0, 0), "b");
+  a.waypoints_m = {V(2.5, 0, 0)};
+  const V spot = b.decide(plan[0], plan, 0.5, {a}, 0.0).waypoints.back();
+  // A third robot (lower id) is about to cross b's way to the spot for 10 s: b stops for it,
+  // then goes on to the same spot.
+  const Eigen::Vector3d along = (spot - plan[0]).normalized(), across(-along.y(), along.x(), 0.0);
+  const V crossing = plan[0] + 0.8 * along;
+  const Fragment c = moving("a1", crossing - 1.0 * across, crossing + 3.0 * across, 0.5);
+  for (double t = 0.2; t < 10.0; t += 0.2) {
+    const auto d = b.decide(plan[0], plan, 0.5, {a, c}, t);
+    EXPECT_EQ(d.kind, DecisionKind::kStop) << "t=" << t;
+  }
+  const auto after = b.decide(plan[0], plan, 0.5, {a}, 10.0);
+  ASSERT_EQ(after.kind, DecisionKind::kFollow);
+  EXPECT_TRUE(after.waypoints.back().isApprox(spot));
+  EXPECT_EQ(b.counters().give_ways_abandoned, 0u);
+}
+
 TEST(Resolver, TracksProgressInsteadOfJumpingToANearbyLaterPartOfThePath) {
   ConflictResolver r("a", kHalf, SafetyOptions{});
   const Path plan{V(0, 0, 0), V(10, 0, 0), V(10, 0.6, 0), V(0, 0.6, 0)};  // U around a thin wall

@@ -34,6 +34,7 @@ ExperimentRecord sample_record(uint64_t seed, double time_s, double final_comple
     r.robots["b"].times_s.push_back(i);
   }
   r.robots["a"].length_m = 9.5;
+  r.robots["a"].longest_blocked_s = 4.5;
   r.robots["b"].length_m = 9.5;
   r.team_bytes["a"]["pose"] = 2048;
   r.team_bytes["a"]["incremental_map"] = 10240;
@@ -71,6 +72,7 @@ TEST(ResultsWriter, WritesEveryFile) {
   EXPECT_NE(summary.find("\"final_completeness\": 0.8"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"accumulated_completeness\": 0.96"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"end_reason\": \"no task views remain\""), std::string::npos);
+  EXPECT_NE(summary.find("\"collisions\": 0, \"longest_blocked_s\": 4.5"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"a\": {\"total\": 2, \"by_state\": {\"given_up\": 1, \"has_view\": 1}, "
                          "\"by_gap\": {\"angle\": 1, \"density\": 1}}"),
             std::string::npos)
@@ -107,6 +109,7 @@ TEST(ResultsWriter, MultiRunSummaryHasMeanAndSpread) {
   EXPECT_NE(json.find("\"pose\": {\"mean\": 0.0075"), std::string::npos) << json;
   EXPECT_NE(json.find("\"map_transmission_kb_per_s\": {"), std::string::npos) << json;
   EXPECT_NE(json.find("\"map_gaps_detected\": {\"mean\": 3"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"longest_blocked_s\": {\"mean\": 4.5"), std::string::npos) << json;
 }
 
 TEST(ResultsWriter, UnwritableFolderIsNamed) {

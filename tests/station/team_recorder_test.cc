@@ -105,6 +105,26 @@ TEST(TeamRecorder, StatusCountersCountFromTheStart) {
   EXPECT_FALSE(track.counters.contains("hlmap.supervoxels"));  // not a counter the record keeps
 }
 
+TEST(TeamRecorder, LongestBlockedStretchPerRobot) {
+  // Blocked 2 s, moving, blocked 5 s (to the end): 5 s; a robot never blocked: 0.
+  const auto t = team();
+  TeamRecorder r(t);
+  auto in_state = [](v1::MotionState s) {
+    v1::RobotPose p = pose_at(0, 0, 0);
+    p.set_state(s);
+    return p;
+  };
+  r.on_pose("a", 0.5, in_state(v1::MOTION_STATE_BLOCKED));  // before start: not counted
+  r.start(1.0);
+  const char* states = "MMBBBMMBBBBBB";  // one pose per second from t = 1 s
+  for (int i = 0; states[i]; ++i) {
+    r.on_pose("a", 1.0 + i, in_state(states[i] == 'B' ? v1::MOTION_STATE_BLOCKED : v1::MOTION_STATE_MOVING));
+    r.on_pose("b", 1.0 + i, in_state(v1::MOTION_STATE_STOPPED));
+  }
+  EXPECT_DOUBLE_EQ(r.record().robots.at("a").longest_blocked_s, 5.0);
+  EXPECT_DOUBLE_EQ(r.record().robots.at("b").longest_blocked_s, 0.0);
+}
+
 TEST(TeamRecorder, PlanningTimeRecordedOncePerRound) {
   const auto t = team();
   TeamRecorder r(t);
