@@ -132,10 +132,26 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
                                   const std::vector<Fragment>& peers_in, double now_s) {
   const double since_last_s = std::max(0.0, now_s - last_decide_s_);
   last_decide_s_ = now_s;
-  std::vector<const Fragment*> peers;
+  // Teammates that claim to drive but have not moved kStillM in kFrozenS count as stopped.
+  // Longer than any honest wait a driving teammate's fragment shows (a yield to a third robot
+  // crossing, a give-way), far shorter than a mission.
+  constexpr double kStillM = 0.2;
+  constexpr double kFrozenS = 15.0;
+  std::vector<Fragment> adjusted;
+  adjusted.reserve(peers_in.size());
   for (const auto& p : peers_in) {
-    if (p.robot_id != robot_id_) peers.push_back(&p);
+    if (p.robot_id == robot_id_) continue;
+    auto [it, fresh] = last_move_.try_emplace(p.robot_id, LastMove{p.position_m, now_s});
+    if (fresh || p.stationary || distance_xy(p.position_m, it->second.position_m) > kStillM || now_s < it->second.since_s)
+      it->second = {p.position_m, now_s};
+    adjusted.push_back(p);
+    if (!p.stationary && now_s - it->second.since_s > kFrozenS) {
+      adjusted.back().stationary = true;
+      adjusted.back().speed_mps = 0.0;
+    }
   }
+  std::vector<const Fragment*> peers;
+  for (const auto& p : adjusted) peers.push_back(&p);
   std::sort(peers.begin(), peers.end(), [](const Fragment* a, const Fragment* b) { return a->robot_id < b->robot_id; });
   // Yields to robots that are no longer heard from end with them.
   for (auto it = yields_.begin(); it != yields_.end();) {

@@ -109,6 +109,15 @@ class ConflictResolver {
   Eigen::Vector3d half_extents_m_;
   double radius_m_;
   SafetyOptions options_;
+  // Where each teammate was last seen to move, and when: a teammate whose fragment says it
+  // drives but that has not moved 0.2 m in 15 s is taken as stopped (seen
+  // in e2e: an idle robot whose safety kept its last approved path while the driver stood at
+  // the goal held a teammate in a head-on yield for 300 s).
+  struct LastMove {
+    Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+    double since_s = 0.0;
+  };
+  std::map<std::string, LastMove> last_move_;
   std::map<std::string, YieldRecord> yields_;   // peers this robot currently yields to
   std::set<std::string> conflicting_;           // peers in conflict at the last decision
   bool stationary_ = true;

@@ -123,6 +123,19 @@ TEST(Resolver, YieldToARobotStoppedForItsOwnReasonsEndsAfterTheTimeout) {
   EXPECT_EQ(b.counters().deadlock_breaks, 1u);
 }
 
+TEST(Resolver, ATeammateThatClaimsToDriveButDoesNotMoveIsTakenAsStopped) {
+  const Path plan{V(0, -3, 0), V(0, 5, 0)};
+  auto b = moving_resolver("b", plan[0], plan, 0.5);
+  // a's fragment keeps saying it drives across b's path, but a stays where it is.
+  const auto a_claims = moving("a", V(-1.0, 0, 0), V(5, 0, 0), 0.5);
+  ASSERT_EQ(b.decide(plan[0], plan, 0.5, {a_claims}, 0.0).yielding_to, "a");
+  EXPECT_EQ(b.decide(plan[0], plan, 0.5, {a_claims}, 10.0).yielding_to, "a") << "an honest wait is kept";
+  b.decide(plan[0], plan, 0.5, {a_claims}, 16.0);  // frozen for 15 s: taken as stopped
+  const auto later = b.decide(plan[0], plan, 0.5, {a_claims}, 20.0);
+  EXPECT_TRUE(later.yielding_to.empty()) << "a has not moved for 20 s";
+  EXPECT_EQ(later.kind, DecisionKind::kFollow);
+}
+
 TEST(Resolver, StationaryRobotOnThePathIsDetoured) {
   ConflictResolver r("a", kHalf, SafetyOptions{});
   const Path plan{V(-5, 0, 0), V(5, 0, 0)};

@@ -47,6 +47,10 @@ Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const 
   options.metrics_port = 0;
   options.arguments = args.service_arguments;
   options.arguments["results"] = results_dir;
+  // Each mission's planning traces in a folder of their own (DIR/seed-<n>), not on top of
+  // the previous seed's.
+  if (auto it = options.arguments.find("trace-dir"); it != options.arguments.end())
+    it->second = (std::filesystem::path(it->second) / std::filesystem::path(results_dir).filename()).string();
   service::ServiceHost host(team, options);
   std::vector<std::string> robots = args.robots;
   if (robots.empty())
