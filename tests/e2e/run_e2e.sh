@@ -20,7 +20,7 @@ mkdir -p "$work"
 bash "$here/make_scene.sh" "$work/yard_room.obj"
 cat > "$work/team.yaml" <<YAML
 scene: yard_room.obj
-time_limit_s: 600
+time_limit_s: 900
 exploration_region:
   min: [-3.0, -3.0, -0.5]
   max: [13.0, 9.0, 3.0]
