@@ -17,6 +17,7 @@
 #include "common/planning/open_targets.h"
 #include "common/planning/plan_proto.h"
 #include "common/planning/round_inputs.h"
+#include "common/planning/round_trace.h"
 #include "common/radio/as_received.h"
 #include "common/transport/topics.h"
 
@@ -434,43 +435,16 @@ void PlanningService::replan(const std::string& reason) {
 
 void PlanningService::write_trace(const std::string& reason, const planning::PlanRequest& req,
                                   const planning::PlanResult& res) {
-  auto vec = [](const Eigen::Vector3d& p) {
-    char b[96];
-    std::snprintf(b, sizeof(b), "[%.2f, %.2f, %.2f]", p.x(), p.y(), p.z());
-    return std::string(b);
-  };
-  const planning::RobotPlan& mine = res.robots[size_t(req.self)];
-  const planning::FollowerCounters& f = follower_->counters();
-  int complete[2] = {0, 0}, incomplete[2] = {0, 0};  // [ground, facade] supervoxels in the region
-  for (const auto& [key, sv] : map_->supervoxels()) {
-    if (!options_.region.contains(sv.center)) continue;
-    (sv.covered ? complete : incomplete)[sv.facade() ? 1 : 0]++;
-  }
-  std::ostringstream j;
-  j << "{\"t\": " << core::ns_to_s(now_ns()) << ", \"round\": " << round_ << ", \"reason\": \"" << reason
-    << "\", \"planner\": \"" << active_name_ << "\", \"position\": " << vec(positions_.at(robot_id_))
-    << ", \"odometry_m\": " << odometry_m_ << ", \"live\": " << req.robots.size() << ", \"views\": " << res.views
-    << ", \"clusters\": " << res.clusters << ", \"open_views\": " << res.open_views
-    << ", \"given_up\": " << ledger_.given_up_targets().size() << ", \"reference\": \"" << res.reference_source
-    << "\", \"agreement\": " << res.agreement.value_or(-1.0) << ", \"time_s\": " << res.times.total_s
-    << ", \"public_views\": " << res.view_stats.public_views << ", \"supervoxels\": {\"ground_complete\": " << complete[0]
-    << ", \"ground_incomplete\": " << incomplete[0] << ", \"facade_complete\": " << complete[1]
-    << ", \"facade_incomplete\": " << incomplete[1] << "}, \"clusters_per_robot\": [";
-  for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cluster_ids.size();
-  j << "], \"cost_s_per_robot\": [";
-  for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cost_s;
-  j << "], \"own_clusters\": [";
-  for (size_t i = 0; i < mine.cluster_centers.size(); ++i) j << (i ? ", " : "") << vec(mine.cluster_centers[i]);
-  j << "], \"route\": [";
-  for (size_t i = 0; i < mine.route.size(); ++i)
-    j << (i ? ", " : "") << "{\"p\": " << vec(mine.route[i].position) << ", \"facade\": " << (mine.route[i].facade ? 1 : 0)
-      << ", \"targets\": " << mine.route[i].targets.size() << "}";
-  j << "], \"follower\": {\"reached\": " << f.views_reached << ", \"observed\": " << f.views_observed
-    << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
-    << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
-    << ", \"legs_kept\": " << f.legs_kept << ", \"passing_observations\": " << passing_->observations()
-    << ", \"observing_s\": " << f.observing_s << "}}\n";
-  trace_ << j.str();
+  planning::RoundTrace round;
+  round.t_s = core::ns_to_s(now_ns());
+  round.round = round_;
+  round.reason = reason;
+  round.planner = active_name_;
+  round.position = positions_.at(robot_id_);
+  round.odometry_m = odometry_m_;
+  round.given_up = ledger_.given_up_targets().size();
+  round.passing_observations = uint64_t(passing_->observations());
+  trace_ << planning::round_trace_json(round, req, res, follower_->counters(), *map_, options_.region);
   trace_.flush();
 }
 

@@ -1,0 +1,55 @@
+#include "common/planning/round_trace.h"
+
+#include <cstdio>
+#include <sstream>
+
+#include "common/highlevel/high_level_map.h"
+
+namespace hexplore::planning {
+namespace {
+
+std::string vec(const Eigen::Vector3d& p) {
+  char b[96];
+  std::snprintf(b, sizeof(b), "[%.2f, %.2f, %.2f]", p.x(), p.y(), p.z());
+  return std::string(b);
+}
+
+}  // namespace
+
+std::string round_trace_json(const RoundTrace& round, const PlanRequest& req, const PlanResult& res,
+                             const FollowerCounters& f, const highlevel::HighLevelMap& map,
+                             const Eigen::AlignedBox3d& region) {
+  const RobotPlan& mine = res.robots[size_t(req.self)];
+  int complete[2] = {0, 0}, incomplete[2] = {0, 0};  // [ground, facade] supervoxels in the region
+  for (const auto& [key, sv] : map.supervoxels()) {
+    if (!region.contains(sv.center)) continue;
+    (sv.covered ? complete : incomplete)[sv.facade() ? 1 : 0]++;
+  }
+  std::ostringstream j;
+  j << "{\"t\": " << round.t_s << ", \"round\": " << round.round << ", \"reason\": \"" << round.reason
+    << "\", \"planner\": \"" << round.planner << "\", \"position\": " << vec(round.position)
+    << ", \"odometry_m\": " << round.odometry_m << ", \"live\": " << req.robots.size() << ", \"views\": " << res.views
+    << ", \"clusters\": " << res.clusters << ", \"open_views\": " << res.open_views
+    << ", \"given_up\": " << round.given_up << ", \"reference\": \"" << res.reference_source
+    << "\", \"agreement\": " << res.agreement.value_or(-1.0) << ", \"time_s\": " << res.times.total_s
+    << ", \"public_views\": " << res.view_stats.public_views << ", \"supervoxels\": {\"ground_complete\": " << complete[0]
+    << ", \"ground_incomplete\": " << incomplete[0] << ", \"facade_complete\": " << complete[1]
+    << ", \"facade_incomplete\": " << incomplete[1] << "}, \"clusters_per_robot\": [";
+  for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cluster_ids.size();
+  j << "], \"cost_s_per_robot\": [";
+  for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cost_s;
+  j << "], \"own_clusters\": [";
+  for (size_t i = 0; i < mine.cluster_centers.size(); ++i) j << (i ? ", " : "") << vec(mine.cluster_centers[i]);
+  j << "], \"route\": [";
+  for (size_t i = 0; i < mine.route.size(); ++i)
+    j << (i ? ", " : "") << "{\"p\": " << vec(mine.route[i].position) << ", \"facade\": " << (mine.route[i].facade ? 1 : 0)
+      << ", \"targets\": " << mine.route[i].targets.size() << "}";
+  j << "], \"follower\": {\"reached\": " << f.views_reached << ", \"observed\": " << f.views_observed
+    << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
+    << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
+    << ", \"legs_kept\": " << f.legs_kept << ", \"passing_observations\": " << round.passing_observations
+    << ", \"observing_s\": " << f.observing_s << "}}\n";
+  return j.str();
+}
+
+}  // namespace hexplore::planning
