@@ -1,4 +1,5 @@
 #include "common/radio/fragment_codec.h"
+#include "common/radio/vec3_proto.h"
 
 #include "common/radio/wire_units.h"
 #include "hexplore/v1/safety.pb.h"
@@ -10,13 +11,6 @@ constexpr uint8_t kStationary = 0x01;
 constexpr uint8_t kYielding = 0x02;
 // A fragment is at most eta_p long; far more waypoints than that can hold is not a fragment.
 constexpr uint64_t kMaxWaypoints = 1024;
-
-Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-void set(v1::Vec3* out, const Eigen::Vector3d& v) {
-  out->set_x(v.x());
-  out->set_y(v.y());
-  out->set_z(v.z());
-}
 
 }  // namespace
 

@@ -1,4 +1,5 @@
 #include "common/radio/plan_codec.h"
+#include "common/radio/vec3_proto.h"
 
 #include "common/highlevel/supervoxel.h"
 #include "common/radio/key_steps.h"
@@ -10,13 +11,6 @@ namespace {
 
 using transport::ByteReader;
 using transport::ByteWriter;
-
-Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-void set(v1::Vec3* out, const Eigen::Vector3d& v) {
-  out->set_x(v.x());
-  out->set_y(v.y());
-  out->set_z(v.z());
-}
 
 }  // namespace
 

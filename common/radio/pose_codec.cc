@@ -1,4 +1,5 @@
 #include "common/radio/pose_codec.h"
+#include "common/radio/vec3_proto.h"
 
 #include <Eigen/Geometry>
 
@@ -12,13 +13,6 @@ constexpr uint8_t kStateMask = 0x07;
 constexpr uint8_t kTilted = 0x08;
 constexpr uint8_t kMoving = 0x10;
 constexpr uint8_t kClimbing = 0x20;  // a vertical speed follows (ground robots mostly have none)
-
-Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-void set(v1::Vec3* out, const Eigen::Vector3d& v) {
-  out->set_x(v.x());
-  out->set_y(v.y());
-  out->set_z(v.z());
-}
 
 }  // namespace
 
