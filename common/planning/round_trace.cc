@@ -47,8 +47,10 @@ std::string round_trace_json(const RoundTrace& round, const PlanRequest& req, co
   j << "], \"follower\": {\"reached\": " << f.views_reached << ", \"observed\": " << f.views_observed
     << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
     << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
-    << ", \"legs_kept\": " << f.legs_kept << ", \"passing_observations\": " << round.passing_observations
-    << ", \"observing_s\": " << f.observing_s << "}}\n";
+    << ", \"legs_kept\": " << f.legs_kept << ", \"stretch_views_kept\": " << f.stretch_views_kept << ", \"passing_observations\": " << round.passing_observations
+    << ", \"observing_s\": " << f.observing_s << ", \"next\": [";
+  for (size_t i = 0; i < round.follower_next.size(); ++i) j << (i ? ", " : "") << vec(round.follower_next[i]);
+  j << "]}}\n";
   return j.str();
 }
 

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -26,6 +27,7 @@ struct RoundTrace {
   double odometry_m = 0.0;
   size_t given_up = 0;              // targets the team gave up on
   uint64_t passing_observations = 0;
+  std::vector<Eigen::Vector3d> follower_next;  // the follower's next views after it merged the round's route
 };
 
 // The JSON line (with its newline) for one round of `req` / `res` on `map`; supervoxels are

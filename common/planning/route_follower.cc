@@ -35,6 +35,18 @@ void RouteFollower::set_route(std::vector<TaskView> route) {
   // nothing. It stays first, in the new route's copy when it has one at the same spot.
   std::optional<TaskView> leg;
   if (driving_ && next_ < route_.size()) leg = route_[next_];
+  // So does the stretch after it: in half the rounds the new route's first cluster lies more
+  // than 5 m from the old one's before the robot got there (tools/report/route_churn.py), and a
+  // robot that follows every new head drives back and forth between neighbourhoods.
+  std::vector<Eigen::Vector3d> stretch;
+  const std::optional<Eigen::Vector3d> anchor =
+      leg ? std::optional<Eigen::Vector3d>(leg->position)
+          : (observing_ ? std::optional<Eigen::Vector3d>(observe_spot_) : std::nullopt);
+  if (anchor)
+    for (size_t i = next_ + (leg ? 1 : 0); i < route_.size(); ++i) {
+      if (horizontal(route_[i].position, *anchor) > options_.keep_stretch_m) break;
+      stretch.push_back(route_[i].position);
+    }
   route_ = std::move(route);
   next_ = 0;
   if (leg) {
@@ -44,6 +56,7 @@ void RouteFollower::set_route(std::vector<TaskView> route) {
     if (same != route_.end()) std::rotate(route_.begin(), same, same + 1);
     else route_.insert(route_.begin(), *leg);
     ++counters_.legs_kept;
+    keep_stretch(1, stretch);
     // The path to it is planned again (what to keep off may have changed since).
     driving_ = false;
     return;
@@ -56,6 +69,21 @@ void RouteFollower::set_route(std::vector<TaskView> route) {
     const auto& targets = route_[next_++].targets;
     observed_targets_.insert(observed_targets_.end(), targets.begin(), targets.end());
   }
+  keep_stretch(next_, stretch);
+}
+
+void RouteFollower::keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch) {
+  // Only views the new route still has move (the others are complete, given up or another
+  // robot's now); each old view takes the first unmoved new view at its spot.
+  size_t kept = at;
+  for (const auto& p : stretch) {
+    const auto it = std::find_if(route_.begin() + static_cast<std::ptrdiff_t>(kept), route_.end(),
+                                 [&](const TaskView& v) { return horizontal(v.position, p) <= options_.reach_m; });
+    if (it == route_.end()) continue;
+    std::rotate(route_.begin() + static_cast<std::ptrdiff_t>(kept), it, it + 1);
+    ++kept;
+  }
+  counters_.stretch_views_kept += static_cast<int>(kept - at);
 }
 
 void RouteFollower::clear() {

@@ -34,6 +34,10 @@ struct FollowerOptions {
   double observation_time_s = 0.0;  // dwell at a facade view: 1 / vartheta_varsigma of the species
   double min_aim_s = 0.5;           // shortest time the sensors stay on one target of a sweep
   double settle_s = 2.0;            // map lag: coverage is judged this long after the observation
+  // A new round keeps the stretch being worked on: the old route's views that followed the leg
+  // (or the spot being observed) within this distance of it, and that the new route still
+  // has, come next in their old order. 0: only the leg is kept.
+  double keep_stretch_m = 5.0;
 };
 
 // How the driver reports its motion (a v1::MotionState without the protobuf).
@@ -54,6 +58,7 @@ struct FollowerCounters {
   int views_done_before = 0;    // every target complete or given up before the robot got there
   int dwells_cut_short = 0;     // every target complete before the dwell was over
   int legs_kept = 0;            // new routes that kept the leg being driven first
+  int stretch_views_kept = 0;   // views a new route kept in the old order after the leg
   double observing_s = 0.0;     // time spent standing and observing
 };
 
@@ -63,7 +68,8 @@ class RouteFollower {
   RouteFollower(FollowerOptions options, int path_species);
 
   // A new route (a planning round). The leg being driven and an observation in progress are
-  // finished first; the new route's views at the same spot join them.
+  // finished first; the new route's views at the same spot join them, and the views of the
+  // stretch that followed them come next (FollowerOptions::keep_stretch_m).
   void set_route(std::vector<TaskView> route);
   void set_path_species(int species) { species_ = species; }
   // Drops the route, the leg and any observation (another planner takes over).
@@ -99,6 +105,7 @@ class RouteFollower {
   void skip_current(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void track_progress(double now_s, const Eigen::Vector3d& position, DriveState state);
   void judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
+  void keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch);
 
   FollowerOptions options_;
   int species_;

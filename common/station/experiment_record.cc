@@ -38,4 +38,14 @@ std::vector<OpenTargetRow> ExperimentRecord::latest_open_targets() const {
   return out;
 }
 
+void ExperimentRecord::add_open_targets_report(const std::string& robot, double sim_time_s,
+                                               std::vector<OpenTargetRow> rows) {
+  std::erase_if(open_targets, [&](const OpenTargetRow& t) { return t.robot == robot && t.sim_time_s == sim_time_s; });
+  for (auto& row : rows) {
+    row.robot = robot;
+    row.sim_time_s = sim_time_s;
+    open_targets.push_back(std::move(row));
+  }
+}
+
 }  // namespace hexplore::station

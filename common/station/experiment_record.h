@@ -83,6 +83,9 @@ struct ExperimentRecord {
   std::vector<OpenTargetRow> open_targets;
   // The rows of each robot's latest report (what was still open at the end).
   std::vector<OpenTargetRow> latest_open_targets() const;
+  // Appends one robot's report taken at `sim_time_s`; a report of that robot at the same time
+  // (the final request answered in the tick of a periodic one) is replaced, not doubled.
+  void add_open_targets_report(const std::string& robot, double sim_time_s, std::vector<OpenTargetRow> rows);
 
   // Sum over robots of their final completeness (paper: lower = less overlap... at equal team completeness).
   double accumulated_completeness() const;

@@ -91,6 +91,7 @@ void PlanningService::setup(service::ServiceContext& context) {
   follow.blocked_s = parse_positive(args, "blocked-s", follow.blocked_s);
   follow.stuck_s = parse_positive(args, "stuck-s", follow.stuck_s);
   follow.settle_s = parse_positive(args, "settle-s", follow.settle_s);
+  follow.keep_stretch_m = parse_positive(args, "keep-stretch-m", follow.keep_stretch_m);
   // The cost model charges 1 / observation speed per facade view; execution spends it.
   follow.observation_time_s = species->observation_speed_views_per_s > 0 ? 1.0 / species->observation_speed_views_per_s : 0.0;
   if (auto it = args.find("observe"); it != args.end()) {
@@ -413,8 +414,6 @@ void PlanningService::replan(const std::string& reason) {
         << ", " << first.y() << ", " << first.z() << ")";
   }
 
-  if (trace_.is_open()) write_trace(reason, req, res);
-
   auto& pub = context_->publisher();
   v1::TeamSolution solution = planning::to_proto(res);
   // Planners that share no route (MROMT+, TSPGA+) send the solution without its sequences:
@@ -430,6 +429,8 @@ void PlanningService::replan(const std::string& reason) {
   pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route));
   follower_->set_path_species(res.path_species >= 0 ? res.path_species : species_index_);
   follower_->set_route(route);
+  // Traced after the follower merged the route: the trace shows where the robot heads next.
+  if (trace_.is_open()) write_trace(reason, req, res);
   follow_route();  // the path to the first view at once
 }
 
@@ -444,6 +445,8 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
   round.odometry_m = odometry_m_;
   round.given_up = ledger_.given_up_targets().size();
   round.passing_observations = uint64_t(passing_->observations());
+  const auto& heading = follower_->route();
+  for (size_t i = 0; i < heading.size() && round.follower_next.size() < 3; ++i) round.follower_next.push_back(heading[i].position);
   trace_ << planning::round_trace_json(round, req, res, follower_->counters(), *map_, options_.region);
   trace_.flush();
 }

@@ -248,10 +248,9 @@ void StationService::request_open_targets() {
             [this, id = robot.id](const transport::Received<v1::OpenTargetsReport>* reply) {
               --reports_pending_;
               if (reply == nullptr) return;  // a robot that is gone has no report
+              std::vector<OpenTargetRow> rows;
               for (const v1::OpenTarget& t : reply->message.targets()) {
                 OpenTargetRow row;
-                row.sim_time_s = recorder_->mission_time_s();
-                row.robot = id;
                 row.key = t.key();
                 row.center = {t.center_m().x(), t.center_m().y(), t.center_m().z()};
                 row.facade = t.facade();
@@ -262,8 +261,9 @@ void StationService::request_open_targets() {
                 if (row.state.empty()) row.state = "unknown";
                 else row.state = lowercase_after_prefix(row.state, "OPEN_TARGET_");
                 row.attempts = int(t.attempts());
-                recorder_->record().open_targets.push_back(std::move(row));
+                rows.push_back(std::move(row));
               }
+              recorder_->record().add_open_targets_report(id, recorder_->mission_time_s(), std::move(rows));
             },
             kSnapshotTimeout);
   }

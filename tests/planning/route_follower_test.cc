@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include "common/core/team_config.h"
 #include "common/planning/synthetic_scene.h"
 
@@ -290,6 +292,51 @@ TEST(RouteFollower, ANewRouteKeepsTheLegBeingDriven) {
   const auto next = f.step(30.0, east.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
   ASSERT_TRUE(next);
   EXPECT_EQ(next->path.goal.ground_key, north.ground_key);
+}
+
+std::vector<uint64_t> ground_keys(const std::vector<TaskView>& route) {
+  std::vector<uint64_t> keys;
+  for (const auto& v : route) keys.push_back(v.ground_key);
+  return keys;
+}
+
+TEST(RouteFollower, ANewRouteKeepsTheStretchAfterTheLegInItsOldOrder) {
+  Drive d;
+  const TaskView a = view_at(d.map, {4.5, 1.5, 0}, false);
+  const TaskView b = view_at(d.map, {6.5, 1.5, 0}, false);
+  const TaskView c = view_at(d.map, {8.5, 1.5, 0}, false);
+  const TaskView far = view_at(d.map, {1.5, 6.5, 0}, false);  // 6 m from a: another stretch
+  const TaskView e = view_at(d.map, {10.5, 1.5, 0}, false);
+  auto driving_to_a = [&](FollowerOptions options) {
+    auto f = std::make_unique<RouteFollower>(options, 0);
+    f->set_route({a, b, far, c});
+    EXPECT_TRUE(f->step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+    f->step(2.0, {2.5, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+    return f;
+  };
+  {
+    // The new head is elsewhere: the leg a, then b (the stretch ends at far, so c is not
+    // kept), then the new route's order.
+    auto f = driving_to_a(d.options);
+    f->set_route({far, c, e, b, a});
+    EXPECT_EQ(ground_keys(f->route()), ground_keys({a, b, far, c, e}));
+    EXPECT_EQ(f->counters().stretch_views_kept, 1);
+  }
+  {
+    // A stretch view the new route no longer has (complete, or a teammate's now) is not put back.
+    auto f = driving_to_a(d.options);
+    f->set_route({far, e, a});
+    EXPECT_EQ(ground_keys(f->route()), ground_keys({a, far, e}));
+    EXPECT_EQ(f->counters().stretch_views_kept, 0);
+  }
+  {
+    // A keep distance under the reach keeps only the leg.
+    FollowerOptions options = d.options;
+    options.keep_stretch_m = 0.5;
+    auto f = driving_to_a(options);
+    f->set_route({far, c, e, b, a});
+    EXPECT_EQ(ground_keys(f->route()), ground_keys({a, far, c, e, b}));
+  }
 }
 
 TEST(GiveUpLedger, GivesUpAfterTwoDistinctSpotsOrThreeTries) {

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """tools/report/route_churn.py on a synthetic trace and open-target report whose figures are
-known: three rounds whose route heads jump 0 m and 10 m, one reference flip, and target flows
+known: three rounds whose route heads jump 0 m and 10 m while the follower's heading moves 0 m and
+3 m, one reference flip, and target flows
 (one completed, one given up, one back from occluded, one new).
 Usage: route_churn_test.py SCRIPT"""
 
@@ -15,9 +16,12 @@ import unittest
 SCRIPT = None
 
 
-def round_line(t, head, reference):
-    return json.dumps({"t": t, "reason": "route timed out", "reference": reference,
-                       "route": [{"p": head + [0.0], "facade": 1, "targets": 1}]})
+def round_line(t, head, reference, heading=None):
+    line = {"t": t, "reason": "route timed out", "reference": reference,
+            "route": [{"p": head + [0.0], "facade": 1, "targets": 1}]}
+    if heading is not None:
+        line["follower"] = {"next": [heading + [0.0]]}
+    return json.dumps(line)
 
 
 class RouteChurnTest(unittest.TestCase):
@@ -25,10 +29,10 @@ class RouteChurnTest(unittest.TestCase):
         self.dir = tempfile.TemporaryDirectory()
         root = self.dir.name
         with open(os.path.join(root, "planning-r1.jsonl"), "w") as f:
-            f.write(round_line(0.0, [0.0, 0.0], "r1") + "\n")
-            f.write(round_line(10.0, [0.0, 0.0], "r1") + "\n")
+            f.write(round_line(0.0, [0.0, 0.0], "r1", [0.0, 0.0]) + "\n")
+            f.write(round_line(10.0, [0.0, 0.0], "r1", [0.0, 0.0]) + "\n")
             f.write("not json\n")
-            f.write(round_line(20.0, [6.0, 8.0], "r2") + "\n")
+            f.write(round_line(20.0, [6.0, 8.0], "r2", [0.0, 3.0]) + "\n")
         with open(os.path.join(root, "open_targets.csv"), "w", newline="") as f:
             w = csv.writer(f)
             w.writerow(["sim_time_s", "robot", "key", "state"])
@@ -47,8 +51,10 @@ class RouteChurnTest(unittest.TestCase):
         out = self.run_script(self.dir.name, self.dir.name)
         self.assertEqual(out.returncode, 0, out.stderr)
         self.assertIn("r1: 3 rounds, mean 10.0 s apart", out.stdout)
-        self.assertIn("median 0.0, p90 10.0, max 10.0; 1 of 2 rounds (50 %) moved the first view more than 5 m",
+        self.assertIn("route-head jump (m): median 0.0, p90 10.0, max 10.0; 1 of 2 rounds (50 %) moved it more than 5 m",
                       out.stdout)
+        # The follower kept its heading within 3 m while the planner's head jumped 10 m.
+        self.assertIn("heading (follower) jump (m): median 0.0, p90 3.0, max 3.0; 0 of 2 rounds (0 %)", out.stdout)
         self.assertIn("another robot than the round before: 1 of 2 rounds", out.stdout)
         self.assertIn("has_view     2 | left    2 (complete 1, given_up 1) | came back    1 (occluded 1) | new    1",
                       out.stdout)
@@ -57,7 +63,7 @@ class RouteChurnTest(unittest.TestCase):
     def test_threshold_option(self):
         out = self.run_script(self.dir.name, "--jump-m", "20")
         self.assertEqual(out.returncode, 0, out.stderr)
-        self.assertIn("0 of 2 rounds (0 %) moved the first view more than 20 m", out.stdout)
+        self.assertIn("0 of 2 rounds (0 %) moved it more than 20 m", out.stdout)
 
     def test_missing_traces(self):
         with tempfile.TemporaryDirectory() as empty:

@@ -112,6 +112,28 @@ TEST(ResultsWriter, MultiRunSummaryHasMeanAndSpread) {
   EXPECT_NE(json.find("\"longest_blocked_s\": {\"mean\": 4.5"), std::string::npos) << json;
 }
 
+TEST(ExperimentRecord, AReportAtTheSameTimeReplacesTheEarlierOneInsteadOfDoublingIt) {
+  // In lockstep the final request can be answered at the time of a periodic one: before, the
+  // summary then counted every open target twice.
+  ExperimentRecord r;
+  OpenTargetRow row;
+  row.state = "has_view";
+  row.key = 1;
+  r.add_open_targets_report("a", 60.0, {row});
+  row.key = 2;
+  r.add_open_targets_report("a", 600.0, {row});
+  r.add_open_targets_report("b", 600.0, {row});
+  row.key = 3;
+  r.add_open_targets_report("a", 600.0, {row});  // the same time again: replaces a's 600 s report
+  EXPECT_EQ(r.open_targets.size(), 3u);
+  const auto latest = r.latest_open_targets();
+  ASSERT_EQ(latest.size(), 2u);
+  for (const auto& t : latest) {
+    EXPECT_EQ(t.sim_time_s, 600.0);
+    EXPECT_EQ(t.key, t.robot == "a" ? 3u : 2u);
+  }
+}
+
 TEST(ResultsWriter, UnwritableFolderIsNamed) {
   EXPECT_THROW(write_results(sample_record(1, 10.0, 0.5), "/proc/hexplore-cannot-write"), std::runtime_error);
 }

@@ -6,7 +6,8 @@ results folder (open_targets.csv), and prints per robot:
 - rounds, replanning reasons and the mean time between rounds;
 - route-head jumps: how far the first view of a round's route lies from the first view of the
   round before (a robot that keeps its plan shows short jumps; one whose plan is rebuilt every
-  round is pulled back and forth between distant views);
+  round is pulled back and forth between distant views), for the planner's route and, where the
+  trace has it (follower.next), for the view the robot heads to after the follower merged it;
 - reference flips: rounds whose reference solution came from another robot than the round before;
 - open-target flows between consecutive open-target reports: targets that left "has_view" (and
   to what: complete, given_up, ...) and targets that came into it from another open state, which
@@ -45,21 +46,27 @@ def percentile(values, q):
     return s[min(len(s) - 1, int(round(q * (len(s) - 1))))]
 
 
+def jump_line(label, heads, jump_m):
+    jumps = [math.dist(a[:2], b[:2]) for a, b in zip(heads, heads[1:])]
+    if not jumps:
+        return
+    far = sum(1 for j in jumps if j > jump_m)
+    print(f"   {label} jump (m): median {percentile(jumps, 0.5):.1f}, p90 {percentile(jumps, 0.9):.1f}, "
+          f"max {max(jumps):.1f}; {far} of {len(jumps)} rounds ({100.0 * far / len(jumps):.0f} %) "
+          f"moved it more than {jump_m:g} m")
+
+
 def route_report(robot, rounds, jump_m):
-    heads = [(r["t"], r["route"][0]["p"]) for r in rounds if r.get("route")]
-    jumps = [math.dist(a[1][:2], b[1][:2]) for a, b in zip(heads, heads[1:])]
     times = [r["t"] for r in rounds]
     gaps = [b - a for a, b in zip(times, times[1:])]
     refs = [r.get("reference", "") for r in rounds]
     flips = sum(1 for a, b in zip(refs, refs[1:]) if a and b and a != b)
     reasons = collections.Counter(r.get("reason", "?") for r in rounds)
-    far = sum(1 for j in jumps if j > jump_m)
     print(f"== {robot}: {len(rounds)} rounds, mean {sum(gaps) / len(gaps) if gaps else float('nan'):.1f} s apart")
     print("   reasons: " + ", ".join(f"{k} {v}" for k, v in reasons.most_common()))
-    if jumps:
-        print(f"   route-head jump (m): median {percentile(jumps, 0.5):.1f}, p90 {percentile(jumps, 0.9):.1f}, "
-              f"max {max(jumps):.1f}; {far} of {len(jumps)} rounds ({100.0 * far / len(jumps):.0f} %) "
-              f"moved the first view more than {jump_m:g} m")
+    jump_line("route-head", [r["route"][0]["p"] for r in rounds if r.get("route")], jump_m)
+    jump_line("heading (follower)", [r["follower"]["next"][0] for r in rounds if r.get("follower", {}).get("next")],
+              jump_m)
     if len(refs) > 1:
         print(f"   reference from another robot than the round before: {flips} of {len(refs) - 1} rounds")
 
