@@ -39,14 +39,13 @@ void RouteFollower::set_route(std::vector<TaskView> route) {
   // than 5 m from the old one's before the robot got there (tools/report/route_churn.py), and a
   // robot that follows every new head drives back and forth between neighbourhoods.
   std::vector<Eigen::Vector3d> stretch;
-  const std::optional<Eigen::Vector3d> anchor =
-      leg ? std::optional<Eigen::Vector3d>(leg->position)
-          : (observing_ ? std::optional<Eigen::Vector3d>(observe_spot_) : std::nullopt);
-  if (anchor)
+  if (leg || observing_) {
+    const Eigen::Vector3d anchor = leg ? leg->position : observe_spot_;
     for (size_t i = next_ + (leg ? 1 : 0); i < route_.size(); ++i) {
-      if (horizontal(route_[i].position, *anchor) > options_.keep_stretch_m) break;
+      if (horizontal(route_[i].position, anchor) > options_.keep_stretch_m) break;
       stretch.push_back(route_[i].position);
     }
+  }
   route_ = std::move(route);
   next_ = 0;
   if (leg) {

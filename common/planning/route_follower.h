@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <unordered_set>
 #include <vector>
 
@@ -87,6 +88,10 @@ class RouteFollower {
   size_t views_left() const { return route_.size() - std::min(route_.size(), next_) + (observing_ ? 1 : 0); }
   bool observing() const { return observing_; }
   const std::vector<TaskView>& route() const { return route_; }
+  // The views still ahead: the one being driven to (or past the spot being observed) onwards.
+  std::span<const TaskView> views_ahead() const {
+    return std::span<const TaskView>(route_).subspan(std::min(route_.size(), next_));
+  }
   const FollowerCounters& counters() const { return counters_; }
 
  private:

@@ -97,7 +97,7 @@ def flow_report(results_dir):
 
 
 def main(argv):
-    args = [a for a in argv[1:]]
+    args = list(argv[1:])
     jump_m = 5.0
     if "--jump-m" in args:
         i = args.index("--jump-m")
