@@ -208,8 +208,7 @@ void RouteFollower::finish_observing(double now_s, const Eigen::Vector3d& positi
 }
 
 std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
-                                                const std::unordered_set<uint64_t>& keep_off,
-                                                const GiveUpLedger& ledger) {
+                                                const std::unordered_set<uint64_t>& keep_off, GiveUpLedger& ledger) {
   if (backoff_) {
     // Leave the spot we are stuck at first, as a leg of its own: prepended to the next path,
     // the back-off point was dropped downstream whenever that path passed right by the robot
@@ -236,6 +235,15 @@ std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position,
     }
     ExecutablePlan path = executable_path(map.graph(), position, species_, route_[next_], &avoid);
     if (!path.valid) {
+      if (!keep_off.empty() && executable_path(map.graph(), position, species_, route_[next_], &avoid_).valid) {
+        // Cut off only by where a silent teammate stands (its body stays there): a try that
+        // failed, as if blocked on the way. The planner does not know what the follower keeps
+        // off and routes here again every round; uncounted, the robot stood still for the
+        // rest of the mission (e2e kill test: two views beyond the killed robot, 915 s).
+        fail_targets(route_[next_], map, ledger);
+        ++counters_.views_cut_off;
+        continue;
+      }
       // No way there from here for us (maybe only around a spot we were blocked at): skip it
       // without counting it against the target, which a teammate may reach.
       ++counters_.views_without_path;
@@ -278,15 +286,19 @@ void RouteFollower::skip_current(const Eigen::Vector3d& position, const highleve
       backoff_ = *it;
       break;
     }
-  for (uint64_t t : route_[next_].targets) {
-    const highlevel::Supervoxel* sv = map.find(t);
-    if (sv && !sv->covered) ledger.failed(t, sv->voxel_count);
-  }
+  fail_targets(route_[next_], map, ledger);
   ++counters_.views_skipped;
   ++next_;
   driving_ = false;
   blocked_since_s_ = -1.0;
   blocked_seen_ = false;
+}
+
+void RouteFollower::fail_targets(const TaskView& view, const highlevel::HighLevelMap& map, GiveUpLedger& ledger) {
+  for (uint64_t t : view.targets) {
+    const highlevel::Supervoxel* sv = map.find(t);
+    if (sv && !sv->covered) ledger.failed(t, sv->voxel_count);
+  }
 }
 
 void RouteFollower::track_progress(double now_s, const Eigen::Vector3d& position, DriveState state) {

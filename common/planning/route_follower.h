@@ -56,6 +56,7 @@ struct FollowerCounters {
   int views_observed = 0;       // facade views dwelt at
   int views_skipped = 0;        // blocked or stuck on the way
   int views_without_path = 0;   // no path from here
+  int views_cut_off = 0;        // a path only through what `keep_off` excludes (an attempt)
   int views_done_before = 0;    // every target complete or given up before the robot got there
   int dwells_cut_short = 0;     // every target complete before the dwell was over
   int legs_kept = 0;            // new routes that kept the leg being driven first
@@ -102,11 +103,13 @@ class RouteFollower {
   };
 
   std::optional<MotionOrder> drive(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
-                                   const std::unordered_set<uint64_t>& keep_off, const GiveUpLedger& ledger);
+                                   const std::unordered_set<uint64_t>& keep_off, GiveUpLedger& ledger);
   std::optional<MotionOrder> begin_observing(double now_s, const Eigen::Vector3d& position,
                                              const highlevel::HighLevelMap& map, const GiveUpLedger& ledger);
   std::optional<MotionOrder> aim(size_t target_index, const Eigen::Vector3d& position);
   void finish_observing(double now_s, const Eigen::Vector3d& position);
+  // A try at the view that did not observe it, for each of its incomplete targets.
+  void fail_targets(const TaskView& view, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void skip_current(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void track_progress(double now_s, const Eigen::Vector3d& position, DriveState state);
   void judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);

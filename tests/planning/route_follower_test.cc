@@ -187,6 +187,36 @@ TEST(RouteFollower, BlockedOnTheWaySkipsTheViewBacksOffAndCountsAnAttempt) {
   EXPECT_EQ(on->path.goal.ground_key, next.ground_key);
 }
 
+TEST(RouteFollower, AViewCutOffByASilentTeammateCountsAnAttemptEachRound) {
+  // A killed teammate's body stands on the only way to the view: the planner, which does not
+  // know what the follower keeps off, routes there every round. Each round is a failed try, so
+  // the target is given up after the ledger's attempts instead of holding the robot forever.
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView beyond = view_at(d.map, {10.5, 4.5, 0}, false);
+  const uint64_t target = beyond.targets.front();
+  d.keep_off.insert(beyond.ground_key);
+  const int rounds = d.ledger.rules().attempts;
+  for (int round = 1; round <= rounds; ++round) {
+    EXPECT_FALSE(d.ledger.given_up(target, d.map.find(target)->voxel_count));
+    f.set_route({beyond});
+    EXPECT_FALSE(f.step(double(round), {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+    EXPECT_TRUE(f.finished());
+    if (round < rounds) EXPECT_EQ(d.ledger.attempts(target), round);
+  }
+  EXPECT_EQ(f.counters().views_cut_off, rounds);
+  EXPECT_TRUE(d.ledger.given_up(target, d.map.find(target)->voxel_count));
+  // A view no path of ours reaches even without keep_off is not held against its target.
+  Drive e;
+  RouteFollower g(e.options, 0);
+  TaskView nowhere = view_at(e.map, {10.5, 4.5, 0}, false);
+  nowhere.ground_key = 999'999'999;  // not a vertex of the graph
+  g.set_route({nowhere});
+  g.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, e.map, e.keep_off, e.ledger);
+  EXPECT_EQ(g.counters().views_without_path, 1);
+  EXPECT_EQ(e.ledger.attempts(nowhere.targets.front()), 0);
+}
+
 TEST(RouteFollower, BacksOffAsALegOfItsOwnThenPlansTheNextPathFromThere) {
   // Blocked short of a view whose way on passes right where the robot stands (the office
   // scene's door: every view lay beyond it). Prepended to that path, the back-off point was
