@@ -110,6 +110,14 @@ int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, boo
 
   const std::string program = argc > 0 ? argv[0] : "service";
   CommandLine cl;
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      char usage[512];
+      std::snprintf(usage, sizeof(usage), kUsage, program.c_str());
+      std::cout << usage << "\n";
+      return 0;
+    }
+  }
   try {
     cl = parse(argc, argv, compose);
   } catch (const std::invalid_argument& e) {

@@ -84,5 +84,12 @@ TEST(ExperimentArgs, MissingPiecesAreErrors) {
   EXPECT_THROW(parse({"config", "t.yaml"}), std::invalid_argument);
 }
 
+TEST(ExperimentArgs, HelpAsksForTheUsageAndNeedsNothingElse) {
+  EXPECT_TRUE(parse({"--help"}).help);
+  EXPECT_TRUE(parse({"-h"}).help);
+  EXPECT_TRUE(parse({"--config", "t.yaml", "--help"}).help);
+  EXPECT_FALSE(parse({"--config", "t.yaml", "--seeds", "1"}).help);
+}
+
 }  // namespace
 }  // namespace hexplore::experiment

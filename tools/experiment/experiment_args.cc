@@ -61,6 +61,10 @@ ExperimentArgs parse_experiment_args(int argc, char** argv) {
   ExperimentArgs a;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
+    if (flag == "--help" || flag == "-h") {
+      a.help = true;
+      return a;
+    }
     if (flag.rfind("--", 0) != 0 || flag.size() < 3) throw std::invalid_argument("unexpected argument '" + flag + "'");
     if (i + 1 >= argc) throw std::invalid_argument("missing value after " + flag);
     const std::string value = argv[++i];

@@ -23,6 +23,7 @@ struct ExperimentArgs {
   std::vector<std::string> robots;     // empty: every robot of the team file
   std::string log_level = "warn";
   std::map<std::string, std::string> service_arguments;  // any other --name value
+  bool help = false;                   // --help or -h: print the usage and stop
 };
 
 // Throws std::invalid_argument with a one-line message.

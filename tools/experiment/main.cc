@@ -266,10 +266,18 @@ int run(int argc, char** argv) {
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
+  constexpr const char* kUsage =
+      "usage: hexplore_experiment --config TEAM.yaml --seeds 1,2,3|1-5 [--results DIR] "
+      "[--planner NAME | --planners A,B,C [--jobs N] [--report true|false] [--report-script PATH]] "
+      "[--robot ID ...] [--log-level L] [--<service option> <value> ...]\n";
   ExperimentArgs args;
   core::TeamConfig base;
   try {
     args = parse_experiment_args(argc, argv);
+    if (args.help) {
+      std::cout << kUsage;
+      return 0;
+    }
     core::LogLevel level;
     if (!core::parse_log_level(args.log_level, level))
       throw std::invalid_argument("--log-level must be debug, info, warn or error, got '" + args.log_level + "'");
@@ -281,10 +289,7 @@ int run(int argc, char** argv) {
       if (!registry.contains(name)) registry.create(name);  // throws, listing the known planners
     base = core::load_team_config(args.config);
   } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << "\n"
-              << "usage: hexplore_experiment --config TEAM.yaml --seeds 1,2,3|1-5 [--results DIR] "
-                 "[--planner NAME | --planners A,B,C [--jobs N] [--report true|false] [--report-script PATH]] "
-                 "[--robot ID ...] [--log-level L] [--<service option> <value> ...]\n";
+    std::cerr << "error: " << e.what() << "\n" << kUsage;
     return 2;
   } catch (const core::ConfigError& e) {
     std::cerr << "error: " << e.what() << "\n";
