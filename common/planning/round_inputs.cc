@@ -1,5 +1,6 @@
 #include "common/planning/round_inputs.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "common/core/clock.h"
@@ -27,9 +28,8 @@ void check_request(const std::string& planner, const PlanRequest& req, const Tea
                                   std::to_string(r.species));
 }
 
-// Limited to the exploration region (robots stand inside the site; outside it the ground may
-// end under them) and to vertices with room for the species' body (not, e.g., the ground seen
-// under a vehicle: paths may pass such spots, views may not stand there).
+// Limited to the stand region (below) and to vertices with room for the species' body (not,
+// e.g., the ground seen under a vehicle: paths may pass such spots, views may not stand there).
 std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
                                                            const std::vector<RobotState>& robots,
                                                            const TeamCapabilities& team,
@@ -48,10 +48,20 @@ std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::Topo
   return out;
 }
 
+Eigen::AlignedBox3d stand_region(const Eigen::AlignedBox3d& region, double max_range_m) {
+  if (region.isEmpty() || !region.sizes().allFinite()) return region;
+  const double margin = std::min(region.sizes().z(), max_range_m);
+  Eigen::AlignedBox3d out = region;
+  out.min().head<2>().array() -= margin;
+  out.max().head<2>().array() += margin;
+  return out;
+}
+
 RoundInputs prepare_round(const PlanRequest& req, const TeamCapabilities& view_team, const PlannerOptions& o,
                           bool record_targets) {
   RoundInputs in;
-  in.reachable = reachable_ground(req.map->graph(), req.robots, view_team, o.region);
+  in.reachable =
+      reachable_ground(req.map->graph(), req.robots, view_team, stand_region(o.region, view_team.max_observation_range()));
   in.context = std::make_unique<MapContext>(*req.map, o, union_of(in.reachable), req.given_up);
   in.views = generate_task_views(*in.context, view_team, o, &in.stats, record_targets ? &in.targets : nullptr);
   return in;

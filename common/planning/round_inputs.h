@@ -18,7 +18,7 @@ namespace hexplore::planning {
 
 struct RoundInputs {
   // Ground vertices each species can drive to from where its robots stand (index = species),
-  // inside the exploration region and with room for the species' body.
+  // inside the stand region and with room for the species' body.
   std::vector<std::unordered_set<uint64_t>> reachable;
   std::unique_ptr<MapContext> context;  // views stand only on ground some robot reaches
   std::vector<TaskView> views;          // ascending key order
@@ -35,6 +35,14 @@ void check_request(const std::string& planner, const PlanRequest& request, const
 // `record_targets` fills RoundInputs::targets (diagnostics).
 RoundInputs prepare_round(const PlanRequest& request, const TeamCapabilities& view_team, const PlannerOptions& options,
                           bool record_targets = false);
+
+// Where views may stand: the exploration region (which bounds the targets) widened
+// horizontally by its height, at most `max_range_m`. Seeing the top of a facade H above the
+// sensor within gamma_th = 45 degrees takes a standoff of at least H; on the default scene the
+// site box left 8 m in front of the 14 m main building's south facade and 4 m in front of its
+// west facade, so the MR1000 stood on the site's edge and its sweeps of the upper floors failed
+// on the angle. An unbounded or empty region is returned as it is.
+Eigen::AlignedBox3d stand_region(const Eigen::AlignedBox3d& region, double max_range_m);
 
 // Ground vertices each species can drive to from its robots' positions (see RoundInputs),
 // on the terrain of its graph species (TeamCapabilities::graph_species_of).

@@ -2,11 +2,14 @@
 // only where some robot can drive, given-up targets, and paths around blocked vertices.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "common/core/team_config.h"
 #include "common/planning/executable_path.h"
 #include "common/planning/hexplore_planner.h"
 #include "common/planning/planner_registry.h"
 #include "common/planning/robot_vertex.h"
+#include "common/planning/round_inputs.h"
 #include "common/planning/synthetic_scene.h"
 
 namespace hexplore::planning {
@@ -45,23 +48,43 @@ struct Team {
   }
 };
 
-TEST(TeamRun, ViewsStayInsideTheExplorationRegion) {
+TEST(TeamRun, TargetsStayInsideTheExplorationRegionViewsInsideTheStandRegion) {
   const Team t;
   const PlanResult all = t.plan(t.options);
   ASSERT_GT(all.views, 0);
   EXPECT_EQ(all.open_views, all.views);  // every cluster is served by someone here
+  // The region's south edge runs just in front of the building's south facade (y = 5): seeing
+  // the facade within gamma_th takes a standoff the region does not have.
   PlannerOptions half = t.options;
-  half.region = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(12, 17, 10));
+  half.region = Eigen::AlignedBox3d(Eigen::Vector3d(-1, 4.5, -0.5), Eigen::Vector3d(25, 17, 4.5));
   const PlanResult bounded = t.plan(half);
   EXPECT_LT(bounded.views, all.views);
   EXPECT_GT(bounded.view_stats.outside_region, 0);
+  const Eigen::AlignedBox3d stand = stand_region(half.region, t.caps.max_observation_range());
+  int outside = 0;
   for (const auto& r : bounded.robots)
-    for (const auto& v : r.route) EXPECT_TRUE(half.region.contains(v.position));
+    for (const auto& v : r.route) {
+      EXPECT_TRUE(stand.contains(v.position));
+      outside += half.region.contains(v.position) ? 0 : 1;
+      for (uint64_t k : v.targets) EXPECT_TRUE(half.region.contains(t.map.find(k)->center)) << k;
+    }
+  EXPECT_GT(outside, 0);  // some views stand beyond the region's edge, looking back in
   PlannerOptions none = t.options;
   none.region = Eigen::AlignedBox3d(Eigen::Vector3d(100, 100, 100), Eigen::Vector3d(101, 101, 101));
   const PlanResult empty = t.plan(none);
   EXPECT_EQ(empty.views, 0);
   EXPECT_EQ(empty.open_views, 0);
+}
+
+TEST(TeamRun, TheStandRegionWidensTheRegionByItsHeightAtMostTheRange) {
+  const Eigen::AlignedBox3d site(Eigen::Vector3d(0, 0, -0.5), Eigen::Vector3d(10, 20, 4.5));
+  const Eigen::AlignedBox3d wide = stand_region(site, 27.0);
+  EXPECT_TRUE(wide.min().isApprox(Eigen::Vector3d(-5, -5, -0.5)));
+  EXPECT_TRUE(wide.max().isApprox(Eigen::Vector3d(15, 25, 4.5)));
+  const Eigen::AlignedBox3d short_range = stand_region(site, 2.0);
+  EXPECT_TRUE(short_range.min().isApprox(Eigen::Vector3d(-2, -2, -0.5)));
+  const Eigen::AlignedBox3d open = stand_region(PlannerOptions::unbounded(), 27.0);
+  EXPECT_FALSE(std::isfinite(open.max().x()));
 }
 
 TEST(TeamRun, GivenUpTargetsGetNoView) {
