@@ -2,7 +2,8 @@
 """tools/report/route_churn.py on a synthetic trace and open-target report whose figures are
 known: three rounds whose route heads jump 0 m and 10 m while the follower's heading moves 0 m and
 3 m, one reference flip, and target flows
-(one completed, one given up, one back from occluded, one new).
+(one completed, one given up, one back from occluded, one new), and the rounds whose route holds
+a view inside an area (--area).
 Usage: route_churn_test.py SCRIPT"""
 
 import csv
@@ -46,6 +47,17 @@ class RouteChurnTest(unittest.TestCase):
 
     def run_script(self, *args):
         return subprocess.run([sys.executable, SCRIPT, *args], capture_output=True, text=True)
+
+    def test_area(self):
+        out = self.run_script(self.dir.name, "--area", "7,9,5,7")  # corners in any order
+        self.assertEqual(out.returncode, 0, out.stderr)
+        self.assertIn("area x 5..7, y 7..9: in 1 of 3 rounds' routes, first at 20.0 s; views there 1-1, "
+                      "the first of them at route position median 0 (min 0, max 0) of 1-1", out.stdout)
+        out = self.run_script(self.dir.name, "--area", "40,40,41,41")
+        self.assertIn("area x 40..41, y 40..41: in no round's route", out.stdout)
+        bad = self.run_script(self.dir.name, "--area", "1,2,3")
+        self.assertNotEqual(bad.returncode, 0)
+        self.assertIn("--area: expected X0,Y0,X1,Y1", bad.stderr)
 
     def test_figures(self):
         out = self.run_script(self.dir.name, self.dir.name)

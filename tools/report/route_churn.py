@@ -11,9 +11,12 @@ results folder (open_targets.csv), and prints per robot:
 - reference flips: rounds whose reference solution came from another robot than the round before;
 - open-target flows between consecutive open-target reports: targets that left "has_view" (and
   to what: complete, given_up, ...) and targets that came into it from another open state, which
-  keeps the number of views flat while the team works.
+  keeps the number of views flat while the team works;
+- with --area X0,Y0,X1,Y1: when the robot's routes held views inside that box and how far back
+  in the route (why a part of the site is never visited: no view there, or views only at the
+  tail of a long route).
 
-Standard library only. Usage: route_churn.py TRACE_DIR [RESULTS_SEED_DIR] [--jump-m 5]
+Standard library only. Usage: route_churn.py TRACE_DIR [RESULTS_SEED_DIR] [--jump-m 5] [--area X0,Y0,X1,Y1]
 """
 
 import collections
@@ -71,6 +74,34 @@ def route_report(robot, rounds, jump_m):
         print(f"   reference from another robot than the round before: {flips} of {len(refs) - 1} rounds")
 
 
+def parse_area(text):
+    try:
+        x0, y0, x1, y1 = (float(v) for v in text.split(","))
+    except ValueError:
+        raise SystemExit(f"--area: expected X0,Y0,X1,Y1 (four numbers), got '{text}'")
+    return min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)
+
+
+def area_report(rounds, area):
+    x0, y0, x1, y1 = area
+    inside = lambda p: x0 <= p[0] <= x1 and y0 <= p[1] <= y1
+    held = []  # (t, views inside, position of the first one, route length)
+    for r in rounds:
+        route = r.get("route", [])
+        where = [i for i, v in enumerate(route) if inside(v["p"])]
+        if where:
+            held.append((r["t"], len(where), where[0], len(route)))
+    label = f"area x {x0:g}..{x1:g}, y {y0:g}..{y1:g}"
+    if not held:
+        print(f"   {label}: in no round's route")
+        return
+    firsts = [h[2] for h in held]
+    print(f"   {label}: in {len(held)} of {len(rounds)} rounds' routes, first at {held[0][0]:.1f} s; "
+          f"views there {min(h[1] for h in held)}-{max(h[1] for h in held)}, the first of them at route position "
+          f"median {percentile(firsts, 0.5):.0f} (min {min(firsts)}, max {max(firsts)}) of "
+          f"{min(h[3] for h in held)}-{max(h[3] for h in held)}")
+
+
 def flow_report(results_dir):
     path = os.path.join(results_dir, "open_targets.csv")
     if not os.path.exists(path):
@@ -99,10 +130,19 @@ def flow_report(results_dir):
 def main(argv):
     args = list(argv[1:])
     jump_m = 5.0
-    if "--jump-m" in args:
-        i = args.index("--jump-m")
-        jump_m = float(args[i + 1])
-        del args[i:i + 2]
+    area = None
+    for flag in ("--jump-m", "--area"):
+        if flag in args:
+            i = args.index(flag)
+            if i + 1 >= len(args):
+                print(f"{flag}: missing value", file=sys.stderr)
+                return 2
+            value = args[i + 1]
+            del args[i:i + 2]
+            if flag == "--jump-m":
+                jump_m = float(value)
+            else:
+                area = parse_area(value)
     if not args or len(args) > 2:
         print(__doc__.strip().splitlines()[-1], file=sys.stderr)
         return 2
@@ -115,6 +155,8 @@ def main(argv):
         rounds = load_rounds(path)
         if rounds:
             route_report(robot, rounds, jump_m)
+            if area:
+                area_report(rounds, area)
     if len(args) == 2:
         flow_report(args[1])
     return 0
