@@ -109,11 +109,11 @@ int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, boo
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
   const std::string program = argc > 0 ? argv[0] : "service";
+  char usage[512];
+  std::snprintf(usage, sizeof(usage), kUsage, program.c_str());
   CommandLine cl;
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      char usage[512];
-      std::snprintf(usage, sizeof(usage), kUsage, program.c_str());
       std::cout << usage << "\n";
       return 0;
     }
@@ -121,10 +121,7 @@ int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, boo
   try {
     cl = parse(argc, argv, compose);
   } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    char usage[512];
-    std::snprintf(usage, sizeof(usage), kUsage, program.c_str());
-    std::cerr << usage << "\n";
+    std::cerr << "error: " << e.what() << "\n" << usage << "\n";
     return 2;
   }
   std::unique_ptr<ServiceHost> host;

@@ -445,8 +445,8 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
   round.odometry_m = odometry_m_;
   round.given_up = ledger_.given_up_targets().size();
   round.passing_observations = uint64_t(passing_->observations());
-  for (const auto& v : follower_->views_ahead().first(std::min<size_t>(3, follower_->views_ahead().size())))
-    round.follower_next.push_back(v.position);
+  const auto ahead = follower_->views_ahead();
+  for (const auto& v : ahead.first(std::min<size_t>(3, ahead.size()))) round.follower_next.push_back(v.position);
   trace_ << planning::round_trace_json(round, req, res, follower_->counters(), *map_, options_.region);
   trace_.flush();
 }
