@@ -24,6 +24,7 @@ ClearanceOptions clearance_options(const core::TeamConfig& team) {
   o.body_radius_m = body_radii(team);
   o.body_half_width_m = body_half_widths(team);
   o.facade_half_extent_m = 0.5 * team.params.eta_s_m;
+  o.ground_spacing_m = team.params.eta_s_m;
   return o;
 }
 
@@ -66,54 +67,107 @@ bool ClearanceIndex::in_band(const Entry& facade, const Eigen::Vector3d& p) cons
   return facade.facade && dz >= -options_.below_m && dz <= options_.above_m;
 }
 
-Eigen::Vector2d ClearanceIndex::nearest_point(const Entry& facade, const Eigen::Vector2d& p) const {
-  const Eigen::Vector2d c = facade.center.head<2>();
-  const Eigen::Vector2d d = p - c;
-  const double half = options_.facade_half_extent_m;
-  const Eigen::Vector2d n = facade.normal.head<2>();
-  if (n.norm() > 0.5) {
-    // Wall-like (normal mostly horizontal): a strip along the surface through the centre.
-    const Eigen::Vector2d along = Eigen::Vector2d(-n.y(), n.x()).normalized();
-    return c + std::clamp(d.dot(along), -half, half) * along;
-  }
-  // Top of something (normal mostly vertical): a disc.
+Eigen::Vector2d ClearanceIndex::nearest_point(const Patch& patch, const Eigen::Vector2d& p) {
+  const Eigen::Vector2d d = p - patch.center;
+  if (!patch.along.isZero()) return patch.center + std::clamp(d.dot(patch.along), -patch.half, patch.half) * patch.along;
   const double r = d.norm();
-  return r <= half ? p : Eigen::Vector2d(c + d * (half / r));
+  return r <= patch.half ? p : Eigen::Vector2d(patch.center + d * (patch.half / r));
 }
 
-double ClearanceIndex::clearance(const Eigen::Vector3d& p, double search_m) const {
-  double best = search_m;
-  for_each_near(p, search_m + options_.facade_half_extent_m, [&](const Entry& e) {
-    if (in_band(e, p)) best = std::min(best, (p.head<2>() - nearest_point(e, p.head<2>())).norm());
+ClearanceIndex::Patch ClearanceIndex::facade_patch(const Entry& facade) const {
+  Patch patch;
+  patch.center = facade.center.head<2>();
+  patch.half = options_.facade_half_extent_m;
+  const Eigen::Vector2d n = facade.normal.head<2>();
+  // Wall-like (normal mostly horizontal): a strip along the surface through the centre; the
+  // top of something (normal mostly vertical): a disc.
+  if (n.norm() > 0.5) patch.along = Eigen::Vector2d(-n.y(), n.x()).normalized();
+  return patch;
+}
+
+void ClearanceIndex::add_rims(const Entry& g, std::vector<Patch>& out) const {
+  const double step = options_.ground_spacing_m;
+  const Eigen::Vector2d c = g.center.head<2>();
+  static const Eigen::Vector2d kSides[] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  for (const Eigen::Vector2d& d : kSides) {
+    const Eigen::Vector2d side = Eigen::Vector2d(-d.y(), d.x());
+    Patch rim;
+    rim.center = c + 0.5 * step * d;
+    rim.along = side;
+    rim.half = 0.5 * step;
+    // Ground beyond: a neighbour supervoxel at this level about one spacing out that way
+    // (centres are voxel means, so neither exactly one spacing out nor in line).
+    bool supported = false, walled = false;
+    for_each_near(g.center, 2.0 * step, [&](const Entry& e) {
+      if (supported || walled || e.key == g.key) return;
+      const Eigen::Vector2d off = e.center.head<2>() - c;
+      if (!e.facade) {
+        const double out_along = off.dot(d);
+        supported = std::abs(e.center.z() - g.center.z()) <= options_.ground_band_m && out_along > 0.25 * step &&
+                    out_along <= 1.75 * step && std::abs(off.dot(side)) <= 0.75 * step;
+      } else if (in_band(e, g.center)) {
+        // A wall there already keeps bodies off; the rim would only double it.
+        walled = (nearest_point(facade_patch(e), rim.center) - rim.center).norm() <= 0.5 * step;
+      }
+    });
+    if (!supported && !walled) out.push_back(rim);
+  }
+}
+
+std::vector<ClearanceIndex::Patch> ClearanceIndex::patches_near(const Eigen::Vector3d& p, double radius) const {
+  std::vector<Patch> out;
+  const double reach = radius + std::max(options_.facade_half_extent_m, options_.ground_spacing_m);
+  for_each_near(p, reach, [&](const Entry& e) {
+    if (e.facade) {
+      if (in_band(e, p)) out.push_back(facade_patch(e));
+    } else if (std::abs(e.center.z() - p.z()) <= options_.ground_band_m) {
+      add_rims(e, out);
+    }
   });
+  return out;
+}
+
+double ClearanceIndex::distance(const std::vector<Patch>& patches, const Eigen::Vector2d& p, double cap) {
+  double best = cap;
+  for (const Patch& patch : patches) best = std::min(best, (p - nearest_point(patch, p)).norm());
   return best;
 }
 
+double ClearanceIndex::clearance(const Eigen::Vector3d& p, double search_m) const {
+  return distance(patches_near(p, search_m), p.head<2>(), search_m);
+}
+
+double ClearanceIndex::influence_m() const {
+  const auto& radii = options_.body_radius_m;
+  const double radius = radii.empty() ? 0.0 : *std::max_element(radii.begin(), radii.end());
+  return 2.0 * options_.ground_spacing_m + radius + 0.25 + options_.facade_half_extent_m;
+}
+
 Eigen::Vector3d ClearanceIndex::clear_position(const Eigen::Vector3d& p, double radius) const {
-  const double before = clearance(p, radius);
+  const std::vector<Patch> patches = patches_near(p, radius + options_.max_shift_m);
+  const double before = distance(patches, p.head<2>(), radius);
   if (before >= radius) return p;
-  // Each facade closer than the radius pushes the point away by its shortfall; pushes from
+  // Each patch closer than the radius pushes the point away by its shortfall; pushes from
   // both sides of a corridor cancel, so the point settles between them.
   Eigen::Vector3d q = p;
   for (int iteration = 0; iteration < 4; ++iteration) {
     Eigen::Vector2d push = Eigen::Vector2d::Zero();
-    for_each_near(q, radius + options_.facade_half_extent_m, [&](const Entry& e) {
-      if (!in_band(e, p)) return;
-      const Eigen::Vector2d from = nearest_point(e, q.head<2>());
+    for (const Patch& patch : patches) {
+      const Eigen::Vector2d from = nearest_point(patch, q.head<2>());
       Eigen::Vector2d away = q.head<2>() - from;
       const double d = away.norm();
-      if (d >= radius) return;
+      if (d >= radius) continue;
       if (d > 1e-6) away /= d;
-      else if ((q.head<2>() - e.center.head<2>()).norm() > 1e-6) away = (q.head<2>() - e.center.head<2>()).normalized();
-      else return;
+      else if ((q.head<2>() - patch.center).norm() > 1e-6) away = (q.head<2>() - patch.center).normalized();
+      else continue;
       push += (radius - d) * away;
-    });
+    }
     if (push.norm() < 1e-3) break;
     q.head<2>() += push;
     const Eigen::Vector2d shift = q.head<2>() - p.head<2>();
     if (shift.norm() > options_.max_shift_m) q.head<2>() = p.head<2>() + shift * (options_.max_shift_m / shift.norm());
   }
-  return clearance(q, radius) > before + 1e-3 ? q : p;
+  return distance(patches, q.head<2>(), radius) > before + 1e-3 ? q : p;
 }
 
 std::vector<uint64_t> ClearanceIndex::ground_near(const Eigen::Vector3d& p, double radius) const {

@@ -1,8 +1,16 @@
 #pragma once
-// Body clearance on the high-level map: how far a ground point lies from the facade
-// supervoxels around body height (walls, rubble, vehicles), and where to move a path waypoint
-// so that a body of a given radius fits there. Facades are known only by centre and normal, so
-// each is taken as a patch: a strip along the surface for wall-like ones, a disc for the rest.
+// Body clearance on the high-level map: how far a ground point lies from what a body must not
+// reach into, and where to move a path waypoint so that a body of a given radius fits there.
+// Two kinds of obstacle patch:
+// - facade supervoxels around body height (walls, rubble, vehicles). Facades are known only by
+//   centre and normal, so each is a strip along the surface for wall-like ones, a disc for the
+//   rest;
+// - the rim of the known ground: a side of a ground supervoxel with no ground beyond it and no
+//   wall in the way, a strip half a seed interval out. A body reaching past it hangs over space
+//   the map has no ground in (the edge of a plateau or of the world, a hole, ground not seen
+//   yet), and a body that cannot turn there is trapped on the edge: in the single-building
+//   scene the MR1000 drove along the edge of the ground plane, could not turn round, and
+//   shuttled there for 800 s of an 1800 s mission (common/highlevel/README.md).
 
 #include <cstdint>
 #include <unordered_map>
@@ -18,6 +26,8 @@ struct ClearanceOptions {
   std::vector<double> body_radius_m;      // per species index (footprint half-diagonal); empty: off
   std::vector<double> body_half_width_m;  // per species index: the least clearance a body stands in
   double facade_half_extent_m = 0.5;  // a facade patch reaches this far from its centre (eta_s / 2)
+  double ground_spacing_m = 1.0;      // ground supervoxels lie this far apart (eta_s): the rim test's step
+  double ground_band_m = 1.0;         // ground this far above or below counts as the same level
   double below_m = 0.2;               // facades centred from this far below the ground ...
   double above_m = 1.5;               // ... to this far above it are in a body's way there
   double max_shift_m = 0.5;           // a waypoint moves at most this far from its vertex
@@ -40,12 +50,15 @@ class ClearanceIndex {
   void erase(const Supervoxel& sv);
   void clear() { cells_.clear(); }
 
-  // Distance in the plane from p to the nearest facade patch in p's height band, looked for
-  // within `search_m`; search_m when there is none that close.
+  // Distance in the plane from p to the nearest obstacle patch (facade in p's height band, rim
+  // of the ground at p's level), looked for within `search_m`; search_m when none is that close.
   double clearance(const Eigen::Vector3d& p, double search_m) const;
-  // p moved (at most max_shift_m, same z) away from the facades closer than `radius`, when
+  // p moved (at most max_shift_m, same z) away from the patches closer than `radius`, when
   // that gains clearance; else p.
   Eigen::Vector3d clear_position(const Eigen::Vector3d& p, double radius) const;
+  // How far a change at p (a supervoxel that appeared, moved or went) can change clearances:
+  // it may add or remove a rim patch up to 1.75 spacings away, which reaches bodies around it.
+  double influence_m() const;
   // Keys of ground supervoxels centred within `radius` (in the plane) of p.
   std::vector<uint64_t> ground_near(const Eigen::Vector3d& p, double radius) const;
 
@@ -61,8 +74,20 @@ class ClearanceIndex {
   uint64_t cell_key(const Eigen::Vector3d& p) const;
   template <typename F>
   void for_each_near(const Eigen::Vector3d& p, double radius, F&& f) const;
-  Eigen::Vector2d nearest_point(const Entry& facade, const Eigen::Vector2d& p) const;
+  // An obstacle in the plane: a strip (centre, unit direction along it, half length) or a disc.
+  struct Patch {
+    Eigen::Vector2d center = Eigen::Vector2d::Zero();
+    Eigen::Vector2d along = Eigen::Vector2d::Zero();  // zero: a disc of radius `half`
+    double half = 0.0;
+  };
+  static Eigen::Vector2d nearest_point(const Patch& patch, const Eigen::Vector2d& p);
+  Patch facade_patch(const Entry& facade) const;
   bool in_band(const Entry& facade, const Eigen::Vector3d& p) const;
+  // The patches that may lie within `radius` of p (facades in p's band, rims at p's level).
+  std::vector<Patch> patches_near(const Eigen::Vector3d& p, double radius) const;
+  // The rim patches of ground entry g: its sides with neither ground nor a wall beyond.
+  void add_rims(const Entry& g, std::vector<Patch>& out) const;
+  static double distance(const std::vector<Patch>& patches, const Eigen::Vector2d& p, double cap);
 
   ClearanceOptions options_;
   double cell_m_;

@@ -59,15 +59,15 @@ void HighLevelMap::apply(const MapUpdate& update) {
   if (update.empty()) return;
   if (update.full_snapshot) clear();
   // Clearance bookkeeping: ground whose own supervoxel changed, and ground near a facade that
-  // appeared, moved or went.
+  // appeared, moved or went, or near ground that did (the rim of the known ground moves).
   const bool clearance = clearance_.options().enabled();
   std::vector<uint64_t> dirty;
-  std::vector<Eigen::Vector3d> facades_touched;
+  std::vector<Eigen::Vector3d> touched;
   auto forget = [&](uint64_t key) {
     const Supervoxel* old = find(key);
     if (!clearance || old == nullptr) return;
     clearance_.erase(*old);
-    if (old->facade()) facades_touched.push_back(old->center);
+    touched.push_back(old->center);
   };
   for (uint64_t key : update.removals) {
     forget(key);
@@ -86,12 +86,17 @@ void HighLevelMap::apply(const MapUpdate& update) {
     graph_.remove_edge(e.a, e.b);
   }
   for (const Supervoxel& sv : update.upserts) {
-    forget(sv.key);
+    const Supervoxel* old = find(sv.key);
+    // Clearance depends only on where supervoxels are and which way facades face.
+    const bool moved = old == nullptr || old->center != sv.center || old->normal != sv.normal || old->surface != sv.surface;
+    if (moved) forget(sv.key);
     supervoxels_[sv.key] = sv;
     if (!clearance) continue;
-    clearance_.insert(sv);
-    if (sv.facade()) facades_touched.push_back(sv.center);
-    else dirty.push_back(sv.key);
+    if (moved) {
+      clearance_.insert(sv);
+      touched.push_back(sv.center);
+    }
+    if (sv.ground()) dirty.push_back(sv.key);
   }
   for (const EdgeKey& e : update.edge_upserts) {
     if (e.a == e.b || !edges_.insert(EdgeKey::of(e.a, e.b)).second) continue;
@@ -102,9 +107,8 @@ void HighLevelMap::apply(const MapUpdate& update) {
   for (const Supervoxel& sv : update.upserts) sync_vertex(sv.key);
   for (const EdgeKey& e : update.edge_upserts) sync_edge(EdgeKey::of(e.a, e.b));
   if (clearance) {
-    const auto& radii = clearance_.options().body_radius_m;
-    const double reach = *std::max_element(radii.begin(), radii.end()) + 0.25 + clearance_.options().facade_half_extent_m;
-    for (const auto& p : facades_touched)
+    const double reach = clearance_.influence_m();
+    for (const auto& p : touched)
       for (uint64_t key : clearance_.ground_near(p, reach)) dirty.push_back(key);
     std::sort(dirty.begin(), dirty.end());
     dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());

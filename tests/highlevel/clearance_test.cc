@@ -45,6 +45,13 @@ MapUpdate hall(double width, double y0, int rows, int length = 10) {
 
 double wall_distance(const Eigen::Vector3d& p, double width) { return std::min(p.y(), width - p.y()); }
 
+// The hall's ground without its walls: open ground whose edges are the rim of the known ground.
+MapUpdate open_ground(double y0, int rows, int length = 10) {
+  MapUpdate u = hall(1.0, y0, rows, length);
+  std::erase_if(u.upserts, [](const Supervoxel& s) { return s.facade(); });
+  return u;
+}
+
 TEST(Clearance, IndexMeasuresTheDistanceToWallPatchesAtBodyHeight) {
   ClearanceOptions o;
   o.body_radius_m = {0.6};
@@ -109,12 +116,9 @@ TEST(Clearance, UpdatesFollowFacadesAddedAndRemoved) {
   ClearanceOptions o;
   o.body_radius_m = {0.6};
   HighLevelMap map({1}, o);
-  MapUpdate ground = hall(4.0, 0.5, 4);
-  ground.upserts.erase(std::remove_if(ground.upserts.begin(), ground.upserts.end(),
-                                      [](const Supervoxel& s) { return s.facade(); }),
-                       ground.upserts.end());
-  map.apply(ground);
-  const uint64_t a = supervoxel_key({3, 0, 0}, SurfaceClass::kGround);
+  // Open ground on both sides of where the wall will stand (else its edge is a rim, below).
+  map.apply(open_ground(-2.5, 7));
+  const uint64_t a = supervoxel_key({3, 3, 0}, SurfaceClass::kGround);  // centred at y = 0.5
   EXPECT_GT(map.graph().clearance(a), 0.6);
   MapUpdate wall;
   Supervoxel f;
@@ -153,6 +157,68 @@ TEST(Clearance, NoRoomToStandUnderAnOverhang) {
   // Paths may still pass it (the estimate is coarse; a door must not close), at a cost.
   EXPECT_TRUE(map.graph().passable(supervoxel_key({5, 2, 0}, SurfaceClass::kGround), 0));
   EXPECT_GT(map.graph().clearance_penalty(supervoxel_key({5, 2, 0}, SurfaceClass::kGround), 0), 0.0);
+}
+
+// The edge of the known ground keeps a body off like a wall: a vertex on the last row is half
+// a seed interval from the rim, its waypoint moves in until the body's radius fits (it can
+// turn there), a corner's moves in both ways, and rows inside are untouched. The MR1000 of
+// the single-building scene drove along the edge of the ground plane and could not turn.
+TEST(Clearance, TheRimOfTheKnownGroundKeepsBodiesOffLikeAWall) {
+  ClearanceOptions o;
+  o.body_radius_m = {0.61};
+  o.body_half_width_m = {0.35};
+  HighLevelMap map({1}, o);
+  map.apply(open_ground(0.5, 6));
+  const TopologyGraph& g = map.graph();
+  const uint64_t edge = supervoxel_key({5, 0, 0}, SurfaceClass::kGround);    // (5.5, 0.5)
+  const uint64_t corner = supervoxel_key({0, 0, 0}, SurfaceClass::kGround);  // (0.5, 0.5)
+  const uint64_t inside = supervoxel_key({5, 2, 0}, SurfaceClass::kGround);  // (5.5, 2.5)
+  EXPECT_NEAR(g.clearance(edge), 0.5, 1e-9);
+  EXPECT_NEAR(g.waypoint(edge, 0)->y(), 0.61, 1e-6);
+  EXPECT_NEAR(g.waypoint(edge, 0)->x(), 5.5, 1e-6);
+  EXPECT_GT(g.waypoint(corner, 0)->x(), 0.6);
+  EXPECT_GT(g.waypoint(corner, 0)->y(), 0.6);
+  EXPECT_GE(g.clearance(inside), 0.61);
+  EXPECT_EQ(*g.waypoint(inside, 0), *g.position(inside));
+  // The body still stands on the last row (it is wider than half a body), at a cost to enter.
+  EXPECT_TRUE(g.room_to_stand(edge, 0));
+  EXPECT_GT(g.clearance_penalty(edge, 0), 0.0);
+  EXPECT_EQ(g.clearance_penalty(inside, 0), 0.0);
+}
+
+// Along a wall the rim is not counted twice: the hall's rows next to its walls move as far as
+// the walls alone push them.
+TEST(Clearance, AWallAtTheEdgeOfTheGroundIsNotARimAsWell) {
+  ClearanceOptions o;
+  o.body_radius_m = {0.61};
+  HighLevelMap map({1}, o);
+  map.apply(hall(4.0, 0.5, 4));
+  const uint64_t by_wall = supervoxel_key({5, 0, 0}, SurfaceClass::kGround);
+  EXPECT_NEAR(map.graph().clearance(by_wall), 0.5, 1e-9);
+  EXPECT_NEAR(map.graph().waypoint(by_wall, 0)->y(), 0.61, 1e-6);
+  EXPECT_NEAR(map.graph().waypoint(by_wall, 0)->x(), 5.5, 1e-6);
+}
+
+// The rim follows the map: ground seen beyond it moves it out (the old edge row is inside
+// now), and ground that goes brings it back.
+TEST(Clearance, GroundSeenBeyondTheRimMovesIt) {
+  ClearanceOptions o;
+  o.body_radius_m = {0.61};
+  HighLevelMap map({1}, o);
+  map.apply(open_ground(0.5, 4));
+  const uint64_t old_edge = supervoxel_key({5, 0, 0}, SurfaceClass::kGround);
+  EXPECT_NEAR(map.graph().clearance(old_edge), 0.5, 1e-9);
+  MapUpdate more = open_ground(-0.5, 1);
+  for (Supervoxel& s : more.upserts) s.key = supervoxel_key({int(std::floor(s.center.x())), -1, 0}, SurfaceClass::kGround);
+  more.edge_upserts.clear();
+  map.apply(more);
+  EXPECT_GE(map.graph().clearance(old_edge), 0.61);
+  EXPECT_EQ(*map.graph().waypoint(old_edge, 0), *map.graph().position(old_edge));
+  MapUpdate gone;
+  for (const Supervoxel& s : more.upserts) gone.removals.push_back(s.key);
+  map.apply(gone);
+  EXPECT_NEAR(map.graph().clearance(old_edge), 0.5, 1e-9);
+  EXPECT_NEAR(map.graph().waypoint(old_edge, 0)->y(), 0.61, 1e-6);
 }
 
 }  // namespace

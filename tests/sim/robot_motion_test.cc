@@ -183,6 +183,22 @@ TEST(RobotMotion, TurnsInPlaceWhereItFits) {
   EXPECT_LT(robot.body_pose().linear().col(0).x(), -0.99);
 }
 
+// On the edge of the ground (half a metre from where the plane ends, the centre of the last
+// row of ground supervoxels) the wheeled body cannot turn off its heading: every yaw swings a
+// corner over the edge. One body radius in (where the planner's clearance now puts waypoints
+// by the rim of the known ground, common/highlevel/clearance.h) it turns and drives away.
+TEST(RobotMotion, OnTheEdgeOfTheGroundTheWheeledBodyCannotTurnButOneRadiusInItCan) {
+  const RayCaster caster(test_course());  // the plane ends at y = -10
+  const auto species = core::builtin_mr1000();
+  RobotMotion on_edge(caster, species, {20, -9.5, 0}, 0.0);
+  drive(on_edge, {{20, -6, 0}}, 20);
+  EXPECT_GT((on_edge.ground_position() - Eigen::Vector3d(20, -6, 0)).norm(), 2.0);
+  const double radius = species.body_half_extents_m.head<2>().norm();
+  RobotMotion inside(caster, species, {20, -10 + radius, 0}, 0.0);
+  EXPECT_EQ(drive(inside, {{20, -6, 0}}, 20), MotionState::kIdle);
+  EXPECT_LT((inside.ground_position() - Eigen::Vector3d(20, -6, 0)).norm(), 0.1);
+}
+
 // The safety layer re-sends the remaining path every cycle, starting at the nearest point of
 // the path when the robot strayed from it a little. The robot steers for the point after it
 // instead of turning aside to a point centimetres away (which made robots jitter in place
