@@ -86,32 +86,37 @@ ClearanceIndex::Patch ClearanceIndex::facade_patch(const Entry& facade) const {
 }
 
 void ClearanceIndex::add_rims(const Entry& g, std::vector<Patch>& out) const {
+  // Sides +x, -x, +y, -y: whether ground lies beyond (a neighbour supervoxel at this level about
+  // one spacing out that way; centres are voxel means, so neither exactly one spacing out nor
+  // in line), and whether a wall stands there (it already keeps bodies off; a rim would double it).
+  static const Eigen::Vector2d kSides[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   const double step = options_.ground_spacing_m;
   const Eigen::Vector2d c = g.center.head<2>();
-  static const Eigen::Vector2d kSides[] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  for (const Eigen::Vector2d& d : kSides) {
-    const Eigen::Vector2d side = Eigen::Vector2d(-d.y(), d.x());
-    Patch rim;
-    rim.center = c + 0.5 * step * d;
-    rim.along = side;
-    rim.half = 0.5 * step;
-    // Ground beyond: a neighbour supervoxel at this level about one spacing out that way
-    // (centres are voxel means, so neither exactly one spacing out nor in line).
-    bool supported = false, walled = false;
-    for_each_near(g.center, 2.0 * step, [&](const Entry& e) {
-      if (supported || walled || e.key == g.key) return;
-      const Eigen::Vector2d off = e.center.head<2>() - c;
-      if (!e.facade) {
-        const double out_along = off.dot(d);
-        supported = std::abs(e.center.z() - g.center.z()) <= options_.ground_band_m && out_along > 0.25 * step &&
-                    out_along <= 1.75 * step && std::abs(off.dot(side)) <= 0.75 * step;
-      } else if (in_band(e, g.center)) {
-        // A wall there already keeps bodies off; the rim would only double it.
-        walled = (nearest_point(facade_patch(e), rim.center) - rim.center).norm() <= 0.5 * step;
-      }
-    });
-    if (!supported && !walled) out.push_back(rim);
+  Patch rims[4];
+  for (int i = 0; i < 4; ++i) {
+    rims[i].center = c + 0.5 * step * kSides[i];
+    rims[i].along = Eigen::Vector2d(-kSides[i].y(), kSides[i].x());
+    rims[i].half = 0.5 * step;
   }
+  bool closed[4] = {false, false, false, false};
+  for_each_near(g.center, 1.75 * step, [&](const Entry& e) {
+    if (e.key == g.key) return;
+    const Eigen::Vector2d off = e.center.head<2>() - c;
+    const bool facade = in_band(e, g.center);
+    if (!facade && (e.facade || std::abs(e.center.z() - g.center.z()) > options_.ground_band_m)) return;
+    const Patch wall = facade ? facade_patch(e) : Patch{};
+    for (int i = 0; i < 4; ++i) {
+      if (closed[i]) continue;
+      if (facade) {
+        closed[i] = (nearest_point(wall, rims[i].center) - rims[i].center).norm() <= 0.5 * step;
+      } else {
+        const double out = off.dot(kSides[i]);
+        closed[i] = out > 0.25 * step && out <= 1.75 * step && std::abs(off.dot(rims[i].along)) <= 0.75 * step;
+      }
+    }
+  });
+  for (int i = 0; i < 4; ++i)
+    if (!closed[i]) out.push_back(rims[i]);
 }
 
 std::vector<ClearanceIndex::Patch> ClearanceIndex::patches_near(const Eigen::Vector3d& p, double radius) const {
@@ -137,14 +142,29 @@ double ClearanceIndex::clearance(const Eigen::Vector3d& p, double search_m) cons
   return distance(patches_near(p, search_m), p.head<2>(), search_m);
 }
 
+Eigen::Vector3d ClearanceIndex::clear_position(const Eigen::Vector3d& p, double radius) const {
+  return pushed_clear(patches_near(p, radius + options_.max_shift_m), p, radius);
+}
+
+ClearanceIndex::Measure ClearanceIndex::measure(const Eigen::Vector3d& p, double search_m,
+                                                const std::vector<double>& radii) const {
+  double reach = search_m;
+  for (double r : radii) reach = std::max(reach, r + options_.max_shift_m);
+  const std::vector<Patch> patches = patches_near(p, reach);  // the expensive part, once
+  Measure m;
+  m.clearance = distance(patches, p.head<2>(), search_m);
+  for (double r : radii) m.waypoints.push_back(pushed_clear(patches, p, r));
+  return m;
+}
+
 double ClearanceIndex::influence_m() const {
   const auto& radii = options_.body_radius_m;
   const double radius = radii.empty() ? 0.0 : *std::max_element(radii.begin(), radii.end());
   return 2.0 * options_.ground_spacing_m + radius + 0.25 + options_.facade_half_extent_m;
 }
 
-Eigen::Vector3d ClearanceIndex::clear_position(const Eigen::Vector3d& p, double radius) const {
-  const std::vector<Patch> patches = patches_near(p, radius + options_.max_shift_m);
+Eigen::Vector3d ClearanceIndex::pushed_clear(const std::vector<Patch>& patches, const Eigen::Vector3d& p,
+                                             double radius) const {
   const double before = distance(patches, p.head<2>(), radius);
   if (before >= radius) return p;
   // Each patch closer than the radius pushes the point away by its shortfall; pushes from

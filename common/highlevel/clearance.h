@@ -56,6 +56,13 @@ class ClearanceIndex {
   // p moved (at most max_shift_m, same z) away from the patches closer than `radius`, when
   // that gains clearance; else p.
   Eigen::Vector3d clear_position(const Eigen::Vector3d& p, double radius) const;
+  // Both at once: clearance within `search_m` and the cleared position for each radius (the
+  // obstacle patches around p are gathered once).
+  struct Measure {
+    double clearance = 0.0;
+    std::vector<Eigen::Vector3d> waypoints;  // per radius
+  };
+  Measure measure(const Eigen::Vector3d& p, double search_m, const std::vector<double>& radii) const;
   // How far a change at p (a supervoxel that appeared, moved or went) can change clearances:
   // it may add or remove a rim patch up to 1.75 spacings away, which reaches bodies around it.
   double influence_m() const;
@@ -88,6 +95,7 @@ class ClearanceIndex {
   // The rim patches of ground entry g: its sides with neither ground nor a wall beyond.
   void add_rims(const Entry& g, std::vector<Patch>& out) const;
   static double distance(const std::vector<Patch>& patches, const Eigen::Vector2d& p, double cap);
+  Eigen::Vector3d pushed_clear(const std::vector<Patch>& patches, const Eigen::Vector3d& p, double radius) const;
 
   ClearanceOptions options_;
   double cell_m_;

@@ -22,9 +22,8 @@ void HighLevelMap::sync_clearance(uint64_t key) {
   if (sv == nullptr || !graph_.contains(key)) return;
   const auto& radii = clearance_.options().body_radius_m;
   const double search = *std::max_element(radii.begin(), radii.end()) + 0.25;
-  std::vector<Eigen::Vector3d> waypoints;
-  for (double r : radii) waypoints.push_back(clearance_.clear_position(sv->center, r));
-  graph_.set_clearance(key, clearance_.clearance(sv->center, search), std::move(waypoints));
+  ClearanceIndex::Measure m = clearance_.measure(sv->center, search, radii);
+  graph_.set_clearance(key, m.clearance, std::move(m.waypoints));
 }
 
 const Supervoxel* HighLevelMap::find(uint64_t key) const {
