@@ -64,7 +64,7 @@ class ClearanceIndex {
   };
   Measure measure(const Eigen::Vector3d& p, double search_m, const std::vector<double>& radii) const;
   // How far a change at p (a supervoxel that appeared, moved or went) can change clearances:
-  // it may add or remove a rim patch up to 1.75 spacings away, which reaches bodies around it.
+  // it may add or remove a rim patch up to ~1.9 spacings away, which reaches bodies around it.
   double influence_m() const;
   // Keys of ground supervoxels centred within `radius` (in the plane) of p.
   std::vector<uint64_t> ground_near(const Eigen::Vector3d& p, double radius) const;

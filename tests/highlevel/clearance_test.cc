@@ -1,6 +1,9 @@
 #include "common/highlevel/clearance.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -220,6 +223,98 @@ TEST(Clearance, GroundSeenBeyondTheRimMovesIt) {
   EXPECT_NEAR(map.graph().clearance(old_edge), 0.5, 1e-9);
   EXPECT_NEAR(map.graph().waypoint(old_edge, 0)->y(), 0.61, 1e-6);
 }
+
+// Clearance depends only on the map, not on the order its pieces came in: ground and walls
+// that arrive, move and go in random batches leave every vertex with the clearance and the
+// waypoint that one update of the final map gives (the rim of a vertex changes when ground up
+// to two seed intervals from it does, and that rim reaches bodies around it).
+class ClearanceOrder : public ::testing::TestWithParam<int> {};
+
+TEST_P(ClearanceOrder, TheSameMapGivesTheSameClearanceWhateverTheOrderOfUpdates) {
+  ClearanceOptions o;
+  o.body_radius_m = {0.61, 0.54};
+  o.body_half_width_m = {0.35, 0.3};
+  std::mt19937 rng(GetParam());
+  // A patchy field: ground cells of a 12 x 12 grid present at random, with jittered centres,
+  // and a few wall pieces.
+  std::vector<Supervoxel> all;
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j) {
+      if (rng() % 4 == 0) continue;
+      Supervoxel g;
+      g.key = supervoxel_key({i, j, 0}, SurfaceClass::kGround);
+      g.center = {i + 0.5 + jitter(rng), j + 0.5 + jitter(rng), 0.0};
+      g.surface = SurfaceClass::kGround;
+      g.traversal_requirement = 1;
+      all.push_back(g);
+    }
+  for (int w = 0; w < 6; ++w) {
+    Supervoxel f;
+    f.key = supervoxel_key({int(rng() % 12), int(rng() % 12), 0}, SurfaceClass::kFacade);
+    f.center = {seed_cell_of(f.key).x + 0.5, seed_cell_of(f.key).y + 0.5, 0.6};
+    f.normal = w % 2 ? Eigen::Vector3d(1, 0, 0) : Eigen::Vector3d(0, 1, 0);
+    f.surface = SurfaceClass::kFacade;
+    all.push_back(f);
+  }
+  auto with_edges = [](std::vector<Supervoxel> svs) {
+    MapUpdate u;
+    u.upserts = std::move(svs);
+    for (const Supervoxel& a : u.upserts)
+      for (const Supervoxel& b : u.upserts)
+        if (a.ground() && b.ground() && a.key < b.key && (a.center - b.center).norm() < 1.6)
+          u.edge_upserts.push_back(EdgeKey::of(a.key, b.key));
+    return u;
+  };
+  HighLevelMap once({1, 1}, o);
+  once.apply(with_edges(all));
+
+  // The same map reached through batches: everything in random order, a third of it first at
+  // another place, some pieces removed, and at last only what still differs, in small batches
+  // (a vertex is re-measured only when something near it changes, so this tests that reach).
+  HighLevelMap batches({1, 1}, o);
+  std::map<uint64_t, Supervoxel> applied;
+  auto apply = [&](std::vector<Supervoxel> up, std::vector<uint64_t> removed) {
+    MapUpdate u = with_edges(up);
+    // Edges to pieces applied before, so the graph is the same at the end.
+    for (const Supervoxel& a : up)
+      for (const auto& [k, b] : applied)
+        if (a.ground() && b.ground() && a.key != k && (a.center - b.center).norm() < 1.6)
+          u.edge_upserts.push_back(EdgeKey::of(a.key, k));
+    u.removals = removed;
+    batches.apply(u);
+    for (uint64_t k : removed) applied.erase(k);
+    for (const Supervoxel& a : up) applied[a.key] = a;
+  };
+  std::vector<Supervoxel> order = all;
+  std::shuffle(order.begin(), order.end(), rng);
+  for (size_t at = 0; at < order.size(); at += 9) {
+    std::vector<Supervoxel> batch(order.begin() + at, order.begin() + std::min(order.size(), at + 9));
+    for (Supervoxel& s : batch)
+      if (rng() % 3 == 0) s.center.x() += 0.4;  // first seen a little elsewhere
+    apply(batch, {});
+  }
+  for (size_t at = 0; at < order.size(); at += 13) {
+    std::vector<uint64_t> gone;
+    for (size_t k = at; k < std::min(order.size(), at + 4); ++k) gone.push_back(order[k].key);
+    apply({}, gone);
+  }
+  std::vector<Supervoxel> differs;
+  for (const Supervoxel& s : order)
+    if (!applied.count(s.key) || applied[s.key].center != s.center) differs.push_back(s);
+  ASSERT_GT(differs.size(), 20u);
+  for (size_t at = 0; at < differs.size(); at += 3)
+    apply(std::vector<Supervoxel>(differs.begin() + at, differs.begin() + std::min(differs.size(), at + 3)), {});
+
+  for (uint64_t key : once.graph().vertex_keys()) {
+    ASSERT_TRUE(batches.graph().contains(key));
+    EXPECT_NEAR(batches.graph().clearance(key), once.graph().clearance(key), 1e-9) << seed_cell_of(key).x << "," << seed_cell_of(key).y;
+    for (int species = 0; species < 2; ++species)
+      EXPECT_LT((*batches.graph().waypoint(key, species) - *once.graph().waypoint(key, species)).norm(), 1e-9);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Clearance, ClearanceOrder, ::testing::Range(1, 31));
 
 }  // namespace
 }  // namespace hexplore::highlevel
