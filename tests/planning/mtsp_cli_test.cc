@@ -5,12 +5,14 @@
 
 #include "tools/mtsp_solver/cli.h"
 #include "tools/mtsp_solver/species_file.h"
+#include "tests/support/scratch_dir.h"
 
 namespace hexplore::mtsp {
 namespace {
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
+  static const hexplore::testing::ScratchDir dir("mtsp_cli_test");  // removed when the binary exits
+  const std::string path = dir.file(name);
   std::ofstream(path) << text;
   return path;
 }

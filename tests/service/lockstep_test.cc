@@ -14,6 +14,7 @@
 #include "common/service/service.h"
 #include "common/transport/topics.h"
 #include "hexplore/v1/test_messages.pb.h"
+#include "tests/support/scratch_dir.h"
 
 namespace hexplore::service {
 namespace {
@@ -34,7 +35,8 @@ class ScriptedService : public Service {
 };
 
 core::TeamConfig three_robots() {
-  const std::string path = ::testing::TempDir() + "/lockstep_" + std::to_string(getpid()) + ".yaml";
+  const hexplore::testing::ScratchDir scratch("lockstep");
+  const std::string path = scratch.file("team.yaml");
   std::ofstream(path) << "species:\n  - builtin: SLUGCAT\nrobots:\n  - {id: a, species: SLUGCAT}\n"
                       << "  - {id: b, species: SLUGCAT}\n  - {id: c, species: SLUGCAT}\n";
   return core::load_team_config(path);

@@ -12,6 +12,7 @@
 #include "common/core/config_error.h"
 #include "common/service/service.h"
 #include "tests/service/echo_service.h"
+#include "tests/support/scratch_dir.h"
 #include "tests/transport/child_process.h"
 
 namespace hexplore::service {
@@ -21,12 +22,18 @@ using namespace std::chrono_literals;
 using testing::ChildProcess;
 using testing::EchoService;
 
+// This binary's files (team files its service processes read), removed when it exits.
+const hexplore::testing::ScratchDir& scratch() {
+  static const hexplore::testing::ScratchDir dir("service_test");
+  return dir;
+}
+
 // A team file in the test's temp dir, on a random block of ports so parallel tests don't collide.
 std::string write_team(const std::string& name, const std::string& extra = "", int* base_port_out = nullptr) {
   std::random_device device;
   const int base_port = 20000 + static_cast<int>(device() % 400) * 100;
   if (base_port_out) *base_port_out = base_port;
-  const std::string path = ::testing::TempDir() + "/" + name + "_" + std::to_string(getpid()) + ".yaml";
+  const std::string path = scratch().file(name + ".yaml");
   std::ofstream out(path);
   out << "species:\n  - builtin: SLUGCAT\nrobots:\n  - {id: a, species: SLUGCAT}\n  - {id: b, species: SLUGCAT}\n"
       << "transport:\n  scheme: tcp\n  base_port: " << base_port << "\n"
@@ -69,7 +76,7 @@ TEST(ServiceMain, BadValueNamesFileAndKey) {
 }
 
 TEST(ServiceMain, BrokenYamlIsOneClearError) {
-  const std::string path = ::testing::TempDir() + "/broken_" + std::to_string(getpid()) + ".yaml";
+  const std::string path = scratch().file("broken.yaml");
   std::ofstream(path) << "robots: [ {id: a\n";
   const std::string line = expect_config_error({"--config", path, "--robot", "a"});
   EXPECT_NE(line.find(path), std::string::npos) << line;

@@ -7,14 +7,14 @@
 
 #include "common/sim/mesh_builder.h"
 #include "common/sim/scene_error.h"
+#include "tests/support/scratch_dir.h"
 
 namespace hexplore::sim {
 namespace {
 
 std::string temp_path(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("hexplore_sim_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return (dir / name).string();
+  static const hexplore::testing::ScratchDir dir("hexplore_sim_test");
+  return dir.file(name);
 }
 
 void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }

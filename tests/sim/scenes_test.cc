@@ -13,6 +13,7 @@
 #include "common/sim/robot_motion.h"
 #include "common/sim/scene_error.h"
 #include "common/sim/scene_parts.h"
+#include "tests/support/scratch_dir.h"
 
 namespace hexplore::sim {
 namespace {
@@ -133,8 +134,8 @@ TEST(Scenes, OsrfCollapsedTownLoadsAndRobotsDrive) {
 TEST(Scenes, TeamSceneAppliesTheTeamFilesImportOptions) {
   MeshBuilder b;
   b.box({0, 0, 0}, {2, 1, 3});  // 2 x 1 x 3, written Y-up below
-  const std::string dir = ::testing::TempDir() + "/team_scene_" + std::to_string(getpid());
-  std::filesystem::create_directories(dir);
+  const hexplore::testing::ScratchDir scratch("team_scene");
+  const std::string dir = scratch.path().string();
   write_mesh(b.take(), dir + "/box.ply");
   const std::string yaml = "scene: box.ply\nscene_import: {up_axis: y, scale: 2, translation: [10, 0, 0]}\n"
                            "species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}]\n";

@@ -15,6 +15,7 @@
 #include "hexplore/v1/pose.pb.h"
 #include "hexplore/v1/status.pb.h"
 #include "hexplore/v1/test_messages.pb.h"
+#include "tests/support/scratch_dir.h"
 
 namespace hexplore::transport {
 namespace {
@@ -117,7 +118,8 @@ TEST(Transport, InprocWithSharedContext) {
 
 TEST(Transport, IpcEndpointCreatesItsFolder) {
   Context ctx;
-  const std::string folder = ::testing::TempDir() + "/hexplore_ipc_" + std::to_string(getpid()) + "/nested";
+  const hexplore::testing::ScratchDir scratch("hexplore_ipc");
+  const std::string folder = scratch.file("nested");
   Publisher pub(ctx, kR1, "ipc://" + folder + "/r1-sim-pub");
   Subscriber sub(ctx);
   sub.connect(pub.endpoint());
@@ -126,7 +128,6 @@ TEST(Transport, IpcEndpointCreatesItsFolder) {
   EventLoop loop;
   loop.add(sub);
   handshake(pub, loop, "team/hello", [&] { return got > 0; });
-  std::filesystem::remove_all(folder);
 }
 
 // Raw frames from a plain ZeroMQ PUB socket: every kind of bad frame is counted and dropped,
