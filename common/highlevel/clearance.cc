@@ -157,14 +157,20 @@ ClearanceIndex::Measure ClearanceIndex::measure(const Eigen::Vector3d& p, double
   return m;
 }
 
+double ClearanceIndex::largest_radius() const {
+  const auto& radii = options_.body_radius_m;
+  return radii.empty() ? 0.0 : *std::max_element(radii.begin(), radii.end());
+}
+
+double ClearanceIndex::search_m() const { return largest_radius() + 0.25; }
+
 double ClearanceIndex::influence_m() const {
   // A supervoxel that changes at p turns the rims of ground up to hypot(1.75, 0.75) spacings
   // away on or off (add_rims' neighbour test); a rim reaches hypot(0.5, 0.5) spacings from its
   // ground's centre; a body measured there feels it from its radius plus the waypoint's shift.
-  const auto& radii = options_.body_radius_m;
-  const double radius = radii.empty() ? 0.0 : *std::max_element(radii.begin(), radii.end());
   const double step = options_.ground_spacing_m;
-  return std::hypot(1.75, 0.75) * step + std::hypot(0.5, 0.5) * step + std::max(radius + options_.max_shift_m, radius + 0.25);
+  return std::hypot(1.75, 0.75) * step + std::hypot(0.5, 0.5) * step +
+         std::max(largest_radius() + options_.max_shift_m, search_m());
 }
 
 Eigen::Vector3d ClearanceIndex::pushed_clear(const std::vector<Patch>& patches, const Eigen::Vector3d& p,

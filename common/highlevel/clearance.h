@@ -66,6 +66,9 @@ class ClearanceIndex {
   // How far a change at p (a supervoxel that appeared, moved or went) can change clearances:
   // it may add or remove a rim patch up to ~1.9 spacings away, which reaches bodies around it.
   double influence_m() const;
+  // How far a vertex's clearance is measured: the largest body radius and a margin (a vertex
+  // with no patch that close reads this value).
+  double search_m() const;
   // Keys of ground supervoxels centred within `radius` (in the plane) of p.
   std::vector<uint64_t> ground_near(const Eigen::Vector3d& p, double radius) const;
 
@@ -95,6 +98,7 @@ class ClearanceIndex {
   // The rim patches of ground entry g: its sides with neither ground nor a wall beyond.
   void add_rims(const Entry& g, std::vector<Patch>& out) const;
   static double distance(const std::vector<Patch>& patches, const Eigen::Vector2d& p, double cap);
+  double largest_radius() const;
   Eigen::Vector3d pushed_clear(const std::vector<Patch>& patches, const Eigen::Vector3d& p, double radius) const;
 
   ClearanceOptions options_;

@@ -20,9 +20,7 @@ void HighLevelMap::clear() {
 void HighLevelMap::sync_clearance(uint64_t key) {
   const Supervoxel* sv = find(key);
   if (sv == nullptr || !graph_.contains(key)) return;
-  const auto& radii = clearance_.options().body_radius_m;
-  const double search = *std::max_element(radii.begin(), radii.end()) + 0.25;
-  ClearanceIndex::Measure m = clearance_.measure(sv->center, search, radii);
+  ClearanceIndex::Measure m = clearance_.measure(sv->center, clearance_.search_m(), clearance_.options().body_radius_m);
   graph_.set_clearance(key, m.clearance, std::move(m.waypoints));
 }
 
