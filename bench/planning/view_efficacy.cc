@@ -134,6 +134,9 @@ struct Outcome {
   // target would be complete if specks of incomplete voxels counted as noise.
   int no_patch[3] = {0, 0, 0};
   std::map<core::CoverageGap, int> gap_after;
+  // Other supervoxels of the species' map the dwell completed besides its target (its sensors
+  // see far more than the target), and voxels it completed in all.
+  long others_completed = 0, voxels_completed = 0;
 };
 
 // Size of the largest 26-connected set among `cells`.
@@ -332,6 +335,18 @@ int main(int argc, char** argv) {
         std::printf("\n");
       }
       Outcome& out = outcomes[r.species.name];
+      for (const auto& [sv_key, sv_voxels] : members[k]) {
+        bool was_open = false, now_complete = true;
+        for (const perception::VoxelKey& key : sv_voxels) {
+          const auto b = r.map->find(key);
+          const auto a = trial.map->find(key);
+          const bool before_ok = b && b->covered(), after_ok = a && a->covered();
+          was_open |= !before_ok;
+          now_complete &= after_ok;
+          out.voxels_completed += after_ok && !before_ok ? 1 : 0;
+        }
+        out.others_completed += sv_key != v.key && was_open && now_complete ? 1 : 0;
+      }
       ++out.tested;
       out.before += double(mine->covered_voxels) / std::max(1, mine->voxel_count);
       const double frac = double(covered) / std::max<size_t>(1, voxels.size());
@@ -358,7 +373,8 @@ int main(int argc, char** argv) {
     std::printf(" no open patch of >= 3/5/10 voxels %4.1f%% %4.1f%% %4.1f%%;", 100.0 * out.no_patch[0] / out.tested,
                 100.0 * out.no_patch[1] / out.tested, 100.0 * out.no_patch[2] / out.tested);
     for (const auto& [gap, n] : out.gap_after) std::printf(" %s %d", std::string(core::to_string(gap)).c_str(), n);
-    std::printf("\n");
+    std::printf("\n           per dwell besides its target: %.1f other supervoxels completed, %.0f voxels completed in all\n",
+                double(out.others_completed) / out.tested, double(out.voxels_completed) / out.tested);
   }
   return 0;
 }

@@ -102,7 +102,9 @@ struct AlgorithmParams {
   // difference): "all_points": points of the voxel per cm^2 (the density of its point cloud);
   // "qualifying_points": only points of observations within the angle and distance thresholds;
   // "neighbour_occupancy": 1 - sparsity, the occupied share of the voxel's 26 neighbours (the
-  // paper: density "is inversely proportional to the sparsity in terrain metrics").
+  // paper: density "is inversely proportional to the sparsity in terrain metrics");
+  // "fused_surface": points of the voxel's 3x3x3 neighbourhood per cm^2 of the surface fitted
+  // to them (the fused Gaussian the normal comes from; the paper: "points per unit area").
   std::string rho_measure = "all_points";
   // Smallest connected patch of ISE voxels that keeps a supervoxel an ISE
   // (highlevel::SegmenterParams::min_ise_patch_voxels; 1 = every voxel must be covered).

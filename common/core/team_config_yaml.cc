@@ -188,9 +188,10 @@ void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   r.read(n, path, "map_resolution_m", p.map_resolution_m);
   r.read(n, path, "rho_th", p.rho_th);
   r.read(n, path, "rho_measure", p.rho_measure);
-  if (p.rho_measure != "all_points" && p.rho_measure != "qualifying_points" && p.rho_measure != "neighbour_occupancy")
+  if (p.rho_measure != "all_points" && p.rho_measure != "qualifying_points" && p.rho_measure != "neighbour_occupancy" &&
+      p.rho_measure != "fused_surface")
     r.fail(n["rho_measure"], path + ".rho_measure",
-           "must be all_points, qualifying_points or neighbour_occupancy, got '" + p.rho_measure + "'");
+           "must be all_points, qualifying_points, neighbour_occupancy or fused_surface, got '" + p.rho_measure + "'");
   r.read(n, path, "min_ise_patch_voxels", p.min_ise_patch_voxels);
   if (p.min_ise_patch_voxels < 1)
     r.fail(n["min_ise_patch_voxels"], path + ".min_ise_patch_voxels",

@@ -12,7 +12,8 @@ namespace {
 
 constexpr char kMagic[8] = {'H', 'X', 'P', 'M', 'A', 'P', '\r', '\n'};  // \r\n catches text-mode mangling
 // 2: VoxelData keeps failed-observation minima and the published coverage gap.
-constexpr uint32_t kVersion = 2;
+// 3: a 16-bit point count and the fused-surface density.
+constexpr uint32_t kVersion = 3;
 
 struct FileHeader {
   char magic[8];

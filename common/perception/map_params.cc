@@ -63,6 +63,7 @@ MapParams make_map_params(const core::AlgorithmParams& params,
   p.rho_th = params.rho_th;
   p.density = params.rho_measure == "qualifying_points"     ? MapParams::Density::kQualifyingPoints
               : params.rho_measure == "neighbour_occupancy" ? MapParams::Density::kNeighbourOccupancy
+              : params.rho_measure == "fused_surface"       ? MapParams::Density::kFusedSurface
                                                             : MapParams::Density::kAllPoints;
   p.gamma_th_deg = params.gamma_th_deg;
   p.gamma_th_ground_deg = params.gamma_th_ground_deg;

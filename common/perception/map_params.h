@@ -37,13 +37,13 @@ double slope_allowance_deg(const SpeciesLimits& s);
 // building-scale map for no gain in the terrain metrics, which fuse a 3x3x3 neighbourhood anyway.
 struct MapParams {
   double resolution_m = 0.15;
-  // Observation density rho(v) is measured in qualifying points per cm^2 of surface inside
-  // the voxel (surface area taken as resolution^2). rho_th = 0.3 points/cm^2 then asks for
+  // Observation density rho(v) is measured in points per cm^2 of surface inside the voxel
+  // (surface area taken as resolution^2; kFusedSurface: the area fitted to the neighbourhood). rho_th = 0.3 points/cm^2 then asks for
   // ~68 points in a 0.15 m voxel: a few frames from a 16-120 line LiDAR within ~10 m, but never
   // one far grazing sweep. The unit does not depend on the resolution.
   double rho_th = 0.3;
   // What rho(v) measures (core::AlgorithmParams::rho_measure).
-  enum class Density { kQualifyingPoints, kAllPoints, kNeighbourOccupancy };
+  enum class Density { kQualifyingPoints, kAllPoints, kNeighbourOccupancy, kFusedSurface };
   Density density = Density::kAllPoints;
   double gamma_th_deg = 45.0;  // observation angle threshold (facade)
   double gamma_th_ground_deg = 75.0;  // observation angle threshold (ground; see core::AlgorithmParams)

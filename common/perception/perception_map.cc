@@ -7,7 +7,7 @@ namespace hexplore::perception {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
-constexpr uint32_t kMaxVoxelCount = 1u << 20;
+constexpr uint32_t kMaxVoxelCount = 1u << 15;
 
 // Spreads the 16 bits of v to every third bit of a 48-bit word.
 uint64_t spread3(uint64_t v) {
@@ -135,16 +135,17 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
     // nine occupied) by a few percent; skipping those neighbours keeps rescans cheap. They are
     // recomputed in full whenever a scan touches them.
     const bool propagates = created || acc.n >= d.count;
-    d.count += acc.n;
+    uint32_t count = d.count + acc.n;
     for (int a = 0; a < 3; ++a) d.sum[a] += static_cast<float>(acc.s[a]);
     for (int a = 0; a < 6; ++a) d.sum_sq[a] += static_cast<float>(acc.q[a]);
-    if (d.count > kMaxVoxelCount) {
+    while (count > kMaxVoxelCount) {
       // Halving every moment keeps mean and covariance while float sums keep their precision
       // (a robot parked for hours keeps adding points to the same voxels).
-      d.count /= 2;
+      count /= 2;
       for (float& v : d.sum) v *= 0.5f;
       for (float& v : d.sum_sq) v *= 0.5f;
     }
+    d.count = static_cast<uint16_t>(count);
     touched_.push_back({acc.key, node, acc.n, propagates, created});
   }
   stats.voxels_touched = touched_.size();
@@ -250,6 +251,7 @@ double PerceptionMap::observation_density(const VoxelData& d) const {
     case MapParams::Density::kQualifyingPoints: return d.obs_points * params_.density_per_point();
     case MapParams::Density::kAllPoints: return d.count * params_.density_per_point();
     case MapParams::Density::kNeighbourOccupancy: return 1.0 - d.empty_neighbours / 26.0;
+    case MapParams::Density::kFusedSurface: return d.fused_density_q * 0.001;
   }
   return 0.0;
 }

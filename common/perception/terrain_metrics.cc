@@ -93,6 +93,13 @@ void update_geometry(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLooku
   // Points on a line (one far LiDAR ring) leave the normal undetermined within a plane.
   const double line_limit = 0.01 * res * res;
   if (eig.eigenvalues()(1) < line_limit) return;
+  // The surface's area in the neighbourhood from its spread in the plane: points spread evenly
+  // over an a x b patch have variances a^2/12 and b^2/12, so area = 12 sqrt(l1 l2). Counting per
+  // fitted area instead of per voxel face is what keeps a wall that runs along a voxel boundary
+  // (its points split between two layers) or past a voxel's corner from looking sparse forever.
+  const double area_m2 = 12.0 * std::sqrt(double(eig.eigenvalues()(1)) * double(eig.eigenvalues()(2)));
+  const double per_cm2 = n / std::max(area_m2 * 1.0e4, 1.0);
+  d.fused_density_q = static_cast<uint16_t>(std::min(65535.0, std::round(per_cm2 * 1000.0)));
   Eigen::Vector3d normal = eig.eigenvectors().col(0).cast<double>().normalized();
 
   // The sensor saw this side of the surface. But the plane is fitted to a 0.45 m neighbourhood,

@@ -27,7 +27,10 @@ struct VoxelData {
   // enough (offsets are below half a voxel) anywhere in a multi-kilometre map.
   float sum[3] = {0.f, 0.f, 0.f};
   float sum_sq[6] = {0.f, 0.f, 0.f, 0.f, 0.f, 0.f};  // xx xy xz yy yz zz
-  uint32_t count = 0;
+  uint16_t count = 0;  // points in the voxel; halved with the moments past 2^15
+  // Points per cm^2 of the surface fitted to the voxel's 3x3x3 neighbourhood, in 0.001 units
+  // (MapParams::Density::kFusedSurface), saturating; refreshed with the normal.
+  uint16_t fused_density_q = 0;
   int16_t normal_q[3] = {0, 0, 0};            // unit normal * 32767; all zero: no normal yet
   // Minimum angle and distance of the qualifying observations (both thresholds met); while
   // none qualified (obs_points == 0), the minima of the failed ones, which tell the coverage

@@ -145,6 +145,45 @@ TEST(Observation, DensityCountsEveryPointOfTheVoxelUnlessConfiguredOtherwise) {
   }
 }
 
+// A wall that runs along a voxel boundary splits its points between two layers of voxels, so
+// counted per voxel face each layer holds half the density the sensor delivered and stays an
+// ISE however long it is observed. Counted per area of the surface fitted to the voxel's
+// neighbourhood (fused_surface) the density is the delivered one, and a sparse wall stays sparse.
+TEST(Observation, FusedSurfaceDensityIsThePointsPerAreaWhereAWallSplitsAcrossVoxels) {
+  // 0.5 points/cm^2 on the plane y = 0 (a voxel boundary), points alternating 4 mm either side.
+  auto split_wall = [](double spacing) {
+    std::vector<float> pts = wall(spacing);
+    for (size_t i = 0; i < pts.size() / 3; ++i) pts[3 * i + 1] = (i % 2 == 0) ? 0.004f : -0.004f;
+    return pts;
+  };
+  const double dense_spacing = 1.0 / std::sqrt(0.5e4);  // 0.5 points/cm^2
+  for (const auto density : {MapParams::Density::kAllPoints, MapParams::Density::kFusedSurface}) {
+    MapParams p = two_species_params();
+    p.density = density;
+    PerceptionMap map(p);
+    map.integrate(scan_of(split_wall(dense_spacing), {1.5, 3, 1}), {});
+    int interior_voxels = 0, complete = 0;
+    for (const VoxelView& v : map.voxels()) {
+      if (!interior(v)) continue;
+      ++interior_voxels;
+      complete += v.covered() ? 1 : 0;
+      if (density == MapParams::Density::kFusedSurface) EXPECT_NEAR(v.observation_density, 0.5, 0.1);
+    }
+    ASSERT_GT(interior_voxels, 200) << "both layers of voxels hold points";
+    if (density == MapParams::Density::kAllPoints) EXPECT_EQ(complete, 0) << "half the points per voxel face";
+    else EXPECT_EQ(complete, interior_voxels);
+  }
+  MapParams p = two_species_params();
+  p.density = MapParams::Density::kFusedSurface;
+  PerceptionMap sparse(p);
+  sparse.integrate(scan_of(split_wall(0.05), {1.5, 3, 1}), {});  // 0.04 points/cm^2
+  for (const VoxelView& v : sparse.voxels()) {
+    if (!interior(v)) continue;
+    EXPECT_NEAR(v.observation_density, 0.04, 0.01);
+    EXPECT_FALSE(v.covered());
+  }
+}
+
 // The coverage gap names the first unmet term of Q(v), so a user can tell "look from
 // elsewhere" (angle, distance) from "look longer" (density).
 TEST(Observation, CoverageGapNamesTheUnmetTerm) {
