@@ -28,6 +28,7 @@
 #include "common/transport/topics.h"
 #include "hexplore/v1/status.pb.h"
 #include "tests/highlevel/synthetic_map.h"
+#include "tests/support/scratch_dir.h"
 #include "tests/transport/child_process.h"
 
 namespace hexplore::highlevel {
@@ -41,7 +42,8 @@ const std::vector<std::string> kRobots = {"a", "b", "c"};
 core::TeamConfig write_team(std::string* path) {
   std::random_device device;
   const int base_port = 23000 + static_cast<int>(device() % 300) * 100;
-  *path = ::testing::TempDir() + "/hlmap_team_" + std::to_string(getpid()) + "_" + std::to_string(base_port) + ".yaml";
+  static const hexplore::testing::ScratchDir scratch("hlmap_service_test");  // removed when the binary exits
+  *path = scratch.file("team_" + std::to_string(base_port) + ".yaml");
   std::ofstream out(*path);
   out << "species:\n  - builtin: SLUGCAT\n  - builtin: MR1000\nrobots:\n"
       << "  - {id: a, species: SLUGCAT}\n  - {id: b, species: MR1000}\n  - {id: c, species: SLUGCAT}\n"

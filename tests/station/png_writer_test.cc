@@ -1,11 +1,11 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 
 #include "common/station/png_writer.h"
+#include "tests/support/scratch_dir.h"
 
 namespace hexplore::station {
 namespace {
@@ -45,7 +45,8 @@ TEST(PngWriter, RoundTripsPixels) {
   Raster r(7, 5, {255, 255, 255});
   r.set(3, 2, {10, 20, 30});
   r.line(0, 4, 6, 4, {1, 2, 3});
-  const auto path = (std::filesystem::temp_directory_path() / "hexplore_png_test.png").string();
+  const hexplore::testing::ScratchDir scratch("png_writer_test");
+  const auto path = scratch.file("round_trip.png");
   write_png(r, path);
   int w = 0, h = 0;
   const auto raw = decode(path, w, h);

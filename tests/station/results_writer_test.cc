@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/station/results_writer.h"
+#include "tests/support/scratch_dir.h"
 
 namespace hexplore::station {
 namespace {
@@ -63,8 +64,8 @@ std::string slurp(const std::filesystem::path& p) {
 }
 
 TEST(ResultsWriter, WritesEveryFile) {
-  const auto dir = std::filesystem::temp_directory_path() / "hexplore_results_test";
-  std::filesystem::remove_all(dir);
+  const hexplore::testing::ScratchDir scratch("results_writer_test");
+  const auto dir = scratch.path() / "results";
   const auto files = write_results(sample_record(1, 100.0, 0.8), dir.string());
   EXPECT_EQ(files.size(), 9u);
   for (const auto& f : files) EXPECT_GT(std::filesystem::file_size(f), 20u) << f;
