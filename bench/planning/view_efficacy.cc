@@ -257,6 +257,25 @@ int main(int argc, char** argv) {
   for (const auto& [key, sv] : fused.supervoxels()) open_facades += sv.facade() && !sv.covered && o.region.contains(sv.center);
   std::printf("fused map: %zu supervoxels, %d open facade targets, %zu task views (%zu facade)\n", fused.size(),
               open_facades, in.views.size(), facade.size());
+  {
+    // Open facade targets by facing and size, and how many of them have a view.
+    std::set<uint64_t> viewed;
+    for (const auto& v : in.views)
+      for (uint64_t t : v.targets) viewed.insert(t);
+    const char* facings[] = {"none", "+x", "-x", "+y", "-y", "up", "down"};
+    std::map<std::string, std::array<int, 2>> by;  // "facing size" -> {targets, with a view}
+    for (const auto& [key, sv] : fused.supervoxels()) {
+      if (!sv.facade() || sv.covered || !o.region.contains(sv.center)) continue;
+      const int f = int(highlevel::facing_of_key(key));
+      const char* size = sv.voxel_count < 5 ? "1-4" : sv.voxel_count < 10 ? "5-9" : sv.voxel_count < 20 ? "10-19" : "20+";
+      auto& row = by[std::string(facings[f]) + " " + size];
+      ++row[0];
+      row[1] += viewed.count(key) ? 1 : 0;
+    }
+    std::printf("open facade targets by facing and voxels (with a view):");
+    for (const auto& [k, n] : by) std::printf(" [%s] %d (%d)", k.c_str(), n[0], n[1]);
+    std::printf("\n");
+  }
 
   // Each species' voxels per supervoxel of its own map (the targets' voxel sets).
   std::vector<std::unordered_map<uint64_t, std::vector<perception::VoxelKey>>> members(robots.size());

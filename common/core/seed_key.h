@@ -29,21 +29,28 @@ inline Eigen::Vector3d cell_center(const GridCell& c, double interval_m) {
   return {(c.x + 0.5) * interval_m, (c.y + 0.5) * interval_m, (c.z + 0.5) * interval_m};
 }
 
-// A perfect (collision-free) hash of a cell: 21 bits per axis, offset to be non-negative.
-// Covers +/-1,048,575 cells per axis (about +/-1,000 km at a 1 m seed interval). Ordering
-// by key is a fixed lexicographic order (z, y, x) that every robot agrees on.
+// A perfect (collision-free) hash of a cell: 20 bits per axis, offset to be non-negative, in
+// the low 60 bits. Covers +/-524,287 cells per axis (about +/-78 km at the 0.15 m voxel size,
+// +/-524 km at a 1 m seed interval). The top 4 bits are left free for users that tag a cell
+// with a class (highlevel::supervoxel_key: facade bit and facing). Ordering by key is a fixed
+// lexicographic order (z, y, x) that every robot agrees on.
+inline constexpr int kSeedKeyAxisBits = 20;
+inline constexpr int kSeedKeyCellBits = 3 * kSeedKeyAxisBits;
+inline constexpr uint64_t kSeedKeyCellMask = (uint64_t{1} << kSeedKeyCellBits) - 1;
+inline constexpr int64_t kSeedKeyAxisLimit = int64_t{1} << (kSeedKeyAxisBits - 1);  // |cell| < this
+
 inline uint64_t seed_key(const GridCell& c) {
-  constexpr int64_t kOffset = 1 << 20;
-  constexpr uint64_t kMask = (uint64_t{1} << 21) - 1;
-  auto axis = [](int32_t v) { return static_cast<uint64_t>(int64_t{v} + kOffset) & kMask; };
-  return (axis(c.z) << 42) | (axis(c.y) << 21) | axis(c.x);
+  constexpr uint64_t kMask = (uint64_t{1} << kSeedKeyAxisBits) - 1;
+  auto axis = [](int32_t v) { return static_cast<uint64_t>(int64_t{v} + kSeedKeyAxisLimit) & kMask; };
+  return (axis(c.z) << (2 * kSeedKeyAxisBits)) | (axis(c.y) << kSeedKeyAxisBits) | axis(c.x);
 }
 
 inline GridCell cell_of_key(uint64_t key) {
-  constexpr int64_t kOffset = 1 << 20;
-  constexpr uint64_t kMask = (uint64_t{1} << 21) - 1;
-  auto axis = [](uint64_t bits) { return static_cast<int32_t>(static_cast<int64_t>(bits & kMask) - kOffset); };
-  return {axis(key), axis(key >> 21), axis(key >> 42)};
+  constexpr uint64_t kMask = (uint64_t{1} << kSeedKeyAxisBits) - 1;
+  auto axis = [](uint64_t bits) {
+    return static_cast<int32_t>(static_cast<int64_t>(bits & kMask) - kSeedKeyAxisLimit);
+  };
+  return {axis(key), axis(key >> kSeedKeyAxisBits), axis(key >> (2 * kSeedKeyAxisBits))};
 }
 
 struct GridCellHash {

@@ -10,14 +10,14 @@
 namespace hexplore::highlevel {
 namespace {
 
-// Key offsets of the 26 neighbours in the seed_key packing (21 bits per axis, x lowest).
+// Key offsets of the 26 neighbours in the seed_key packing (x lowest).
 std::array<int64_t, 26> neighbour_deltas() {
   std::array<int64_t, 26> d{};
   int n = 0;
   for (int dz = -1; dz <= 1; ++dz)
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx)
-        if (dx != 0 || dy != 0 || dz != 0) d[n++] = dx + dy * (int64_t{1} << 21) + dz * (int64_t{1} << 42);
+        if (dx != 0 || dy != 0 || dz != 0) d[n++] = dx + dy * (int64_t{1} << core::kSeedKeyAxisBits) + dz * (int64_t{1} << 2 * core::kSeedKeyAxisBits);
   return d;
 }
 const std::array<int64_t, 26> kNeighbours = neighbour_deltas();
@@ -25,6 +25,23 @@ const std::array<int64_t, 26> kNeighbours = neighbour_deltas();
 uint64_t shifted(uint64_t key, int64_t delta) { return static_cast<uint64_t>(static_cast<int64_t>(key) + delta); }
 
 int64_t sq(int64_t v) { return v * v; }
+
+// The class bits of the supervoxels a voxel may join (supervoxel.h): traversable ground, or
+// facade of the voxel's facing.
+uint64_t class_bits(const VoxelSample& v) {
+  if (v.traversable_ground()) return 0;
+  return supervoxel_key({0, 0, 0}, SurfaceClass::kFacade, facing_of(v.normal)) & kClassKeyMask;
+}
+
+// Every class a seed cell may hold.
+std::array<uint64_t, 1 + kFacingCount> all_classes() {
+  std::array<uint64_t, 1 + kFacingCount> out{};
+  out[0] = 0;
+  for (int f = 0; f < kFacingCount; ++f)
+    out[1 + f] = supervoxel_key({0, 0, 0}, SurfaceClass::kFacade, Facing(f)) & kClassKeyMask;
+  return out;
+}
+const std::array<uint64_t, 1 + kFacingCount> kClasses = all_classes();
 
 int64_t cell_dist2(const core::GridCell& a, const core::GridCell& b) {
   return sq(int64_t{a.x} - b.x) + sq(int64_t{a.y} - b.y) + sq(int64_t{a.z} - b.z);
@@ -104,11 +121,10 @@ uint64_t SupervoxelSegmenter::group_of_seed(uint64_t seed) const {
 }
 
 // Cell membership uses the voxel centre so every robot puts a voxel in the same cell.
-uint64_t SupervoxelSegmenter::seed_cell_of_voxel(const core::GridCell& c, bool facade) const {
+uint64_t SupervoxelSegmenter::seed_cell_of_voxel(const core::GridCell& c, uint64_t cls) const {
   const Eigen::Vector3d centre((c.x + 0.5) * params_.resolution_m, (c.y + 0.5) * params_.resolution_m,
                                (c.z + 0.5) * params_.resolution_m);
-  return supervoxel_key(core::cell_of(centre, params_.eta_s_m),
-                        facade ? SurfaceClass::kFacade : SurfaceClass::kGround);
+  return core::seed_key(core::cell_of(centre, params_.eta_s_m)) | cls;
 }
 
 Eigen::Vector3d SupervoxelSegmenter::voxel_center(uint64_t vkey) const {
@@ -144,8 +160,8 @@ void SupervoxelSegmenter::insert_voxel(const VoxelSample& v, std::unordered_set<
   const uint64_t vkey = voxel_key(v.key);
   VoxelRec rec;
   rec.sample = v;
-  rec.facade = !v.traversable_ground();
-  rec.seed_cell = seed_cell_of_voxel(v.key, rec.facade);
+  rec.cls = class_bits(v);
+  rec.seed_cell = seed_cell_of_voxel(v.key, rec.cls);
   Seed& cell = seeds_[rec.seed_cell];
   cell.cell_voxels.insert(vkey);
   cell.key_sum[0] += v.key.x;
@@ -213,14 +229,14 @@ void SupervoxelSegmenter::regroup(const std::unordered_set<uint64_t>& changed_se
     done.insert(start);
     for (size_t i = 0; i < component.size(); ++i) {
       const uint64_t s = component[i];
-      const SurfaceClass surface = surface_of_key(s);
+      const uint64_t cls = s & kClassKeyMask;
       const core::GridCell c = seed_cell_of(s);
       const Eigen::Vector3d cs = centroid(seeds_.at(s));
       for (int dz = -1; dz <= 1; ++dz)
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
             if (dx == 0 && dy == 0 && dz == 0) continue;
-            const uint64_t t = supervoxel_key({c.x + dx, c.y + dy, c.z + dz}, surface);
+            const uint64_t t = core::seed_key({c.x + dx, c.y + dy, c.z + dz}) | cls;
             if (done.count(t) != 0) continue;
             auto tit = seeds_.find(t);
             if (tit == seeds_.end() || tit->second.cell_voxels.empty()) continue;
@@ -280,8 +296,8 @@ size_t SupervoxelSegmenter::relabel(const std::unordered_set<uint64_t>& dirty_se
   std::vector<uint64_t> frontier;
   for (uint64_t cell : d2) {
     const core::GridCell c = core::cell_of_key(cell);
-    for (SurfaceClass surface : {SurfaceClass::kGround, SurfaceClass::kFacade}) {
-      const uint64_t skey = supervoxel_key(c, surface);
+    for (uint64_t cls : kClasses) {
+      const uint64_t skey = core::seed_key(c) | cls;
       auto it = seeds_.find(skey);
       if (it == seeds_.end() || it->second.cell_voxels.empty()) continue;
       VoxelRec* rec = voxels_.find(it->second.seed_voxel);
@@ -297,11 +313,11 @@ size_t SupervoxelSegmenter::relabel(const std::unordered_set<uint64_t>& dirty_se
     for (uint64_t u : frontier) {
       const VoxelRec* from = voxels_.find(u);
       const uint64_t label = from->wave_label;
-      const bool facade = from->facade;
+      const uint64_t cls = from->cls;
       for (int64_t d : kNeighbours) {
         const uint64_t n = shifted(u, d);
         VoxelRec* rec = voxels_.find(n);
-        if (rec == nullptr || rec->visit_stamp == stamp || rec->facade != facade) continue;
+        if (rec == nullptr || rec->visit_stamp == stamp || rec->cls != cls) continue;
         if (rec->candidate_stamp != stamp) {
           rec->candidate_stamp = stamp;
           rec->candidate_label = label;
@@ -326,8 +342,8 @@ size_t SupervoxelSegmenter::relabel(const std::unordered_set<uint64_t>& dirty_se
   size_t examined = 0;
   for (uint64_t cell : d1) {
     const core::GridCell c = core::cell_of_key(cell);
-    for (SurfaceClass surface : {SurfaceClass::kGround, SurfaceClass::kFacade}) {
-      const uint64_t skey = supervoxel_key(c, surface);
+    for (uint64_t cls : kClasses) {
+      const uint64_t skey = core::seed_key(c) | cls;
       auto it = seeds_.find(skey);
       if (it == seeds_.end()) continue;
       for (uint64_t vkey : it->second.cell_voxels) {
@@ -403,7 +419,7 @@ std::unordered_set<uint64_t> SupervoxelSegmenter::ground_neighbours(uint64_t gro
     for (uint64_t v : seeds_.at(s).region) {
       for (int64_t d : kNeighbours) {
         const VoxelRec* rec = voxels_.find(shifted(v, d));
-        if (rec == nullptr || rec->facade || rec->label == 0) continue;
+        if (rec == nullptr || rec->cls != 0 || rec->label == 0) continue;
         const uint64_t g = group_of_seed(rec->label);
         if (g != group && g != 0) out.insert(g);
       }
@@ -427,7 +443,7 @@ SegmentationChange SupervoxelSegmenter::update(std::span<const VoxelSample> voxe
     }
     if (found != nullptr) {
       VoxelRec& rec = *found;
-      if (rec.facade == !v.traversable_ground()) {  // same class: attributes only
+      if (rec.cls == class_bits(v)) {  // same class: attributes only
         if (rec.label != 0) {
           Stats& st = seeds_.at(rec.label).stats;
           st.add(rec.sample, -1, levels_.size());

@@ -1,6 +1,6 @@
 #pragma once
 // Improved supervoxel segmentation of the perception map (paper "Supervoxel Segmentation"):
-// one seed per eta_s grid cell and surface class, BFS merging of adjacent seeds closer than
+// one seed per eta_s grid cell and surface class (ground, or facade of one facing), BFS merging of adjacent seeds closer than
 // eta_e (keeps a noisy, thick ground slab in one layer), and region growth by wavefront
 // propagation over the voxel hash (26-neighbourhood lookups, no KD-tree). Updates are
 // incremental: only the cells touched by a voxel delta (and a one-cell margin) are re-grown,
@@ -86,14 +86,14 @@ class SupervoxelSegmenter {
     VoxelSample sample;
     uint64_t seed_cell = 0;  // class-tagged key of the eta_s cell holding the voxel
     uint64_t label = 0;      // class-tagged key of the seed whose region holds the voxel
-    bool facade = false;
+    uint64_t cls = 0;         // class bits of its supervoxel keys: 0 = ground, else facade + facing
     // Wavefront state, valid when the stamps equal the current propagation's stamp.
     uint32_t visit_stamp = 0;
     uint32_t candidate_stamp = 0;
     uint64_t wave_label = 0;
     uint64_t candidate_label = 0;
   };
-  struct Seed {  // one eta_s cell of one surface class
+  struct Seed {  // one eta_s cell of one class
     std::unordered_set<uint64_t> cell_voxels;  // voxels inside the cell
     int64_t key_sum[3] = {0, 0, 0};            // for the centroid of the cell's voxels
     uint64_t seed_voxel = 0;                   // voxel nearest the centroid: wavefront source
@@ -102,7 +102,7 @@ class SupervoxelSegmenter {
   };
 
   uint64_t voxel_key(const core::GridCell& c) const { return core::seed_key(c); }
-  uint64_t seed_cell_of_voxel(const core::GridCell& c, bool facade) const;
+  uint64_t seed_cell_of_voxel(const core::GridCell& c, uint64_t cls) const;
   Eigen::Vector3d voxel_center(uint64_t vkey) const;
   Eigen::Vector3d centroid(const Seed& s) const;
   void remove_voxel(uint64_t vkey, std::unordered_set<uint64_t>& dirty_seeds);

@@ -2,6 +2,8 @@
 // A supervoxel of the high-level map (paper "Supervoxel Data Structure"): a connected cluster
 // of voxels grown from a seed on the eta_s grid, keyed globally by the seed's cell.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -19,23 +21,50 @@ namespace hexplore::highlevel {
 // Values equal hexplore.v1.SurfaceClass.
 enum class SurfaceClass : int { kUnspecified = 0, kGround = 1, kFacade = 2 };
 
-// Ground and facade supervoxels may grow from the same seed cell; the facade one carries this
-// bit (seed_key uses only the low 63 bits), so keys never collide across classes.
-inline constexpr uint64_t kFacadeKeyBit = uint64_t{1} << 63;
+// Which way a facade surface faces: the axis its outward (sensor-side) normal is closest to.
+// The paper's segmentation follows the 3D boundaries of objects: the outer and inner faces of
+// a wall, and a floor and the ceiling under it, are different supervoxels. One eta_s cell of a
+// building's wall holds the outer face, the inner face seen through a window, the window's
+// reveals, sill and lintel; averaged into one supervoxel, their normals give a direction none
+// of them has, a view made for it sees half of them, and the supervoxel never completes.
+// kNone: a voxel without a normal.
+enum class Facing : uint8_t { kNone = 0, kPlusX = 1, kMinusX = 2, kPlusY = 3, kMinusY = 4, kUp = 5, kDown = 6 };
+inline constexpr int kFacingCount = 7;
 
-inline uint64_t supervoxel_key(const core::GridCell& seed_cell, SurfaceClass surface) {
+// The facing of a (sensor-oriented) voxel normal: up or down when it is steeper than 45 deg,
+// else the horizontal axis it is closest to. Ties go to the first in enum order.
+inline Facing facing_of(const Eigen::Vector3f& n) {
+  const float ax = std::abs(n.x()), ay = std::abs(n.y()), az = std::abs(n.z());
+  if (ax == 0.0f && ay == 0.0f && az == 0.0f) return Facing::kNone;
+  if (az * az >= ax * ax + ay * ay) return n.z() > 0 ? Facing::kUp : Facing::kDown;
+  if (ax >= ay) return n.x() >= 0 ? Facing::kPlusX : Facing::kMinusX;
+  return n.y() >= 0 ? Facing::kPlusY : Facing::kMinusY;
+}
+
+// Supervoxel keys: the seed cell's core::seed_key in the low 60 bits, the facing in bits 60-62
+// and the facade bit 63. Ground and facade supervoxels (of every facing) may grow from the same
+// seed cell, so keys never collide across classes; a ground key is the plain seed_key.
+inline constexpr uint64_t kFacadeKeyBit = uint64_t{1} << 63;
+inline constexpr int kFacingKeyShift = core::kSeedKeyCellBits;
+inline constexpr uint64_t kClassKeyMask = ~core::kSeedKeyCellMask;  // facade bit and facing
+
+inline uint64_t supervoxel_key(const core::GridCell& seed_cell, SurfaceClass surface, Facing facing = Facing::kNone) {
   const uint64_t key = core::seed_key(seed_cell);
-  return surface == SurfaceClass::kFacade ? (key | kFacadeKeyBit) : key;
+  if (surface != SurfaceClass::kFacade) return key;
+  return key | kFacadeKeyBit | (uint64_t(facing) << kFacingKeyShift);
 }
 inline core::GridCell seed_cell_of(uint64_t supervoxel_key) {
-  return core::cell_of_key(supervoxel_key & ~kFacadeKeyBit);
+  return core::cell_of_key(supervoxel_key & core::kSeedKeyCellMask);
 }
 inline SurfaceClass surface_of_key(uint64_t supervoxel_key) {
   return (supervoxel_key & kFacadeKeyBit) != 0 ? SurfaceClass::kFacade : SurfaceClass::kGround;
 }
+inline Facing facing_of_key(uint64_t supervoxel_key) {
+  return Facing((supervoxel_key >> kFacingKeyShift) & 7);
+}
 
 struct Supervoxel {
-  uint64_t key = 0;                                  // supervoxel_key(seed cell, surface)
+  uint64_t key = 0;                                  // supervoxel_key(seed cell, surface, facing)
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // mean voxel coordinate, metres
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // mean voxel normal (unit)
   bool covered = false;           // Q = 1: every voxel is a CSE (else ISE)

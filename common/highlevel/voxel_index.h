@@ -10,12 +10,14 @@
 #include <unordered_map>
 #include <vector>
 
+#include "common/core/seed_key.h"
+
 namespace hexplore::highlevel {
 
 template <typename Record>
 class VoxelIndex {
  public:
-  // Keys are core::seed_key packings (21 bits per axis, offset-coded, x lowest).
+  // Keys are core::seed_key packings (core::kSeedKeyAxisBits per axis, offset-coded, x lowest).
   Record* find(uint64_t key) {
     Brick* b = brick(brick_key(key));
     if (b == nullptr) return nullptr;
@@ -86,11 +88,14 @@ class VoxelIndex {
     bool used = false;
   };
   static uint64_t brick_key(uint64_t key) {
-    constexpr uint64_t kMask = (uint64_t{1} << 21) - 1;
-    return (((key >> 42) & kMask) >> 3) << 42 | (((key >> 21) & kMask) >> 3) << 21 | ((key & kMask) >> 3);
+    constexpr int kBits = core::kSeedKeyAxisBits;
+    constexpr uint64_t kMask = (uint64_t{1} << kBits) - 1;
+    return (((key >> 2 * kBits) & kMask) >> 3) << 2 * kBits | (((key >> kBits) & kMask) >> 3) << kBits |
+           ((key & kMask) >> 3);
   }
   static int local(uint64_t key) {
-    return static_cast<int>(((key >> 42) & 7) << 6 | ((key >> 21) & 7) << 3 | (key & 7));
+    constexpr int kBits = core::kSeedKeyAxisBits;
+    return static_cast<int>(((key >> 2 * kBits) & 7) << 6 | ((key >> kBits) & 7) << 3 | (key & 7));
   }
   Brick* brick(uint64_t bk) const {
     if (last_ != nullptr && last_key_ == bk) return last_;

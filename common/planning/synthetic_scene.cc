@@ -52,16 +52,19 @@ highlevel::MapUpdate synthetic_scene(const SyntheticSceneOptions& o) {
         if (y == b.y0) n.y() -= 1;
         if (y == b.y1) n.y() += 1;
         n.normalize();
-        for (int z = door.count({x, y}) ? 2 : 0; z < b.floors_m; ++z) {
-          Supervoxel sv;
-          sv.center = {(x + 0.5) * c, (y + 0.5) * c, (z + 0.5) * c};
-          sv.normal = n;
-          sv.surface = SurfaceClass::kFacade;
-          sv.key = highlevel::supervoxel_key(core::cell_of(sv.center, c), sv.surface);
-          sv.covered = rng.uniform() < o.covered_fraction;
-          sv.voxel_count = 30;
-          up.upserts.push_back(sv);
-        }
+        // Each wall cell has an outer face and an inner one (one facing per supervoxel).
+        for (int z = door.count({x, y}) ? 2 : 0; z < b.floors_m; ++z)
+          for (const Eigen::Vector3d& face : {n, Eigen::Vector3d(-n)}) {
+            Supervoxel sv;
+            sv.center = Eigen::Vector3d((x + 0.5) * c, (y + 0.5) * c, (z + 0.5) * c) - 0.1 * c * face;
+            sv.normal = face;
+            sv.surface = SurfaceClass::kFacade;
+            sv.key = highlevel::supervoxel_key(core::cell_of(sv.center, c), sv.surface,
+                                               highlevel::facing_of(face.cast<float>()));
+            sv.covered = rng.uniform() < o.covered_fraction;
+            sv.voxel_count = 30;
+            up.upserts.push_back(sv);
+          }
       }
   for (int x = 0; x < o.width_cells; ++x)
     for (int y = 0; y < o.depth_cells; ++y) {

@@ -42,7 +42,7 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
     const double d2 = m.squaredNorm();
     if (d2 >= range * range || d2 < 1e-12) continue;
     const double inv = 1.0 / std::sqrt(d2);
-    if (std::abs(m.dot(target_n)) * inv <= cos_gamma) continue;
+    if (-m.dot(target_n) * inv <= cos_gamma) continue;  // in front of the surface, within gamma_th
     const double s = m.dot(gn) * inv;
     if (s < sin_lo || s > sin_hi) continue;
     const Eigen::Vector3d sensor = g->center + gn * o.sensor_height_m;

@@ -37,9 +37,11 @@ ViewGeometry view_geometry(const Eigen::Vector3d& sensor, const Eigen::Vector3d&
   g.distance_m = m.norm();
   if (g.distance_m <= 1e-9) return g;
   const Eigen::Vector3d u = m / g.distance_m;
+  // Facade normals face the side their sensors saw (perception orients them; a supervoxel
+  // holds one facing), so a view behind the surface sees its back: incidence over 90 deg.
   const double tn = target_normal.norm();
-  const double c = tn > 1e-9 ? std::abs(u.dot(target_normal) / tn) : 1.0;
-  g.incidence_rad = std::acos(std::clamp(c, 0.0, 1.0));
+  const double c = tn > 1e-9 ? -u.dot(target_normal) / tn : 1.0;
+  g.incidence_rad = std::acos(std::clamp(c, -1.0, 1.0));
   const double vn = view_normal.norm();
   const double s = vn > 1e-9 ? u.dot(view_normal) / vn : u.z();
   g.elevation_rad = std::asin(std::clamp(s, -1.0, 1.0));

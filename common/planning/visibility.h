@@ -32,7 +32,7 @@ class OcclusionGrid {
 // Geometry of one (view, target) pair.
 struct ViewGeometry {
   double distance_m = 0.0;     // |m|
-  double incidence_rad = 0.0;  // angle between the view direction and the target normal (either side)
+  double incidence_rad = 0.0;  // angle between the reversed view direction and the target normal; > 90 deg: from behind
   double elevation_rad = 0.0;  // observation angle: elevation of the target above the view's plane
 };
 

@@ -1,7 +1,7 @@
 #pragma once
-// Supervoxel keys (core::seed_key of the seed cell, facade bit 63) as seed-cell steps from the
-// previous key: sorted keys and keys along a route are neighbours, so a key takes three bytes
-// or less where fixed64 took eight. The facade bit rides in the x step.
+// Supervoxel keys (core::seed_key of the seed cell, class bits 60-63: highlevel::supervoxel_key)
+// as seed-cell steps from the previous key: sorted keys and keys along a route are neighbours,
+// so a key takes three bytes or less where fixed64 took eight. The class bits ride in the x step.
 
 #include <cstdint>
 

@@ -185,12 +185,67 @@ TEST(Segmenter, FacadeAndGroundInOneCellGetDistinctKeys) {
   seg.update(v);
   ASSERT_EQ(seg.supervoxels().size(), 2u);
   const uint64_t ground = supervoxel_key({0, 0, 0}, SurfaceClass::kGround);
+  const uint64_t wall = supervoxel_key({0, 0, 0}, SurfaceClass::kFacade, Facing::kPlusX);
   ASSERT_NE(seg.find(ground), nullptr);
-  ASSERT_NE(seg.find(ground | kFacadeKeyBit), nullptr);
+  ASSERT_NE(seg.find(wall), nullptr);
   EXPECT_TRUE(seg.find(ground)->traversable());
-  EXPECT_TRUE(seg.find(ground | kFacadeKeyBit)->facade());
-  EXPECT_NEAR(seg.find(ground | kFacadeKeyBit)->normal.x(), 1.0, 1e-9);
+  EXPECT_TRUE(seg.find(wall)->facade());
+  EXPECT_NEAR(seg.find(wall)->normal.x(), 1.0, 1e-9);
   EXPECT_EQ(seg.edge_count(), 0u) << "edges join ground supervoxels only";
+}
+
+// The paper's segmentation follows the boundaries of objects: the two faces of a wall (their
+// normals oriented to the sensors that saw them) and a ceiling over them are separate
+// supervoxels, although all lie in one seed cell and touch each other.
+TEST(Segmenter, TheFacesOfAWallAndTheCeilingAboveAreSeparateSupervoxels) {
+  SupervoxelSegmenter seg({}, kLevels);
+  std::vector<VoxelSample> v;
+  for (int y = 0; y < 6; ++y)
+    for (int z = 0; z < 5; ++z) {
+      v.push_back(voxel_at({1, y, z}, 0.15, 0, 0, -Eigen::Vector3f::UnitX()));  // outer face, seen from -x
+      v.push_back(voxel_at({2, y, z}, 0.15, 0, 0, Eigen::Vector3f::UnitX()));   // inner face, seen from +x
+    }
+  for (int x = 3; x < 6; ++x)
+    for (int y = 0; y < 6; ++y) v.push_back(voxel_at({x, y, 5}, 0.15, 0, 0, -Eigen::Vector3f::UnitZ()));  // ceiling
+  seg.update(v);
+  ASSERT_EQ(seg.supervoxels().size(), 3u);
+  const Supervoxel* outer = seg.find(supervoxel_key({0, 0, 0}, SurfaceClass::kFacade, Facing::kMinusX));
+  const Supervoxel* inner = seg.find(supervoxel_key({0, 0, 0}, SurfaceClass::kFacade, Facing::kPlusX));
+  const Supervoxel* ceiling = seg.find(supervoxel_key({0, 0, 0}, SurfaceClass::kFacade, Facing::kDown));
+  ASSERT_TRUE(outer && inner && ceiling);
+  EXPECT_EQ(outer->voxel_count, 30);
+  EXPECT_EQ(inner->voxel_count, 30);
+  EXPECT_EQ(ceiling->voxel_count, 18);
+  EXPECT_NEAR(outer->normal.x(), -1.0, 1e-9);
+  EXPECT_NEAR(inner->normal.x(), 1.0, 1e-9);
+  EXPECT_NEAR(ceiling->normal.z(), -1.0, 1e-9);
+
+  // A voxel whose normal turns joins the supervoxel of its new facing.
+  VoxelSample turned = v[0];
+  turned.normal = Eigen::Vector3f::UnitX();
+  seg.update(std::span(&turned, 1));
+  EXPECT_EQ(seg.find(supervoxel_key({0, 0, 0}, SurfaceClass::kFacade, Facing::kMinusX))->voxel_count, 29);
+  EXPECT_EQ(seg.find(supervoxel_key({0, 0, 0}, SurfaceClass::kFacade, Facing::kPlusX))->voxel_count, 31);
+}
+
+TEST(SupervoxelKey, CarriesCellSurfaceAndFacing) {
+  for (const core::GridCell cell : {core::GridCell{0, 0, 0}, core::GridCell{-5, 17, -3},
+                                    core::GridCell{524287, -524288, 3}}) {
+    for (int f = 0; f < kFacingCount; ++f) {
+      const uint64_t key = supervoxel_key(cell, SurfaceClass::kFacade, Facing(f));
+      EXPECT_EQ(seed_cell_of(key), cell);
+      EXPECT_EQ(surface_of_key(key), SurfaceClass::kFacade);
+      EXPECT_EQ(facing_of_key(key), Facing(f));
+    }
+    const uint64_t ground = supervoxel_key(cell, SurfaceClass::kGround);
+    EXPECT_EQ(ground, core::seed_key(cell));
+    EXPECT_EQ(seed_cell_of(ground), cell);
+    EXPECT_EQ(surface_of_key(ground), SurfaceClass::kGround);
+  }
+  EXPECT_EQ(facing_of(Eigen::Vector3f(0.9f, 0.3f, 0.2f)), Facing::kPlusX);
+  EXPECT_EQ(facing_of(Eigen::Vector3f(0.1f, -0.9f, 0.2f)), Facing::kMinusY);
+  EXPECT_EQ(facing_of(Eigen::Vector3f(0.5f, 0.0f, -0.8f)), Facing::kDown);
+  EXPECT_EQ(facing_of(Eigen::Vector3f(0.0f, 0.0f, 0.0f)), Facing::kNone);
 }
 
 TEST(Segmenter, SameVoxelSetGivesSameSupervoxelsInAnyDeltaOrder) {

@@ -124,9 +124,12 @@ TEST(TaskViews, WallsOccludeTheirBackSide) {
     up.upserts.push_back(sv);
     return sv.key;
   };
-  const uint64_t west = add({2.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ(), true);
+  // The target faces west: the far west ground is behind the occluder, the near west ground
+  // (between the occluder and the target) sees it, the east ground sees its back.
+  const uint64_t west = add({1.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ(), true);
+  const uint64_t near_west = add({5.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ(), true);
   add({9.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ(), true);
-  add({5.5, 0.5, 1.5}, highlevel::SurfaceClass::kFacade, -Eigen::Vector3d::UnitX(), true);  // occluder
+  add({4.5, 0.5, 1.5}, highlevel::SurfaceClass::kFacade, -Eigen::Vector3d::UnitX(), true);  // occluder
   const uint64_t target = add({7.5, 0.5, 1.5}, highlevel::SurfaceClass::kFacade, -Eigen::Vector3d::UnitX(), false);
   highlevel::HighLevelMap map({2, 1});
   map.apply(up);
@@ -136,6 +139,43 @@ TEST(TaskViews, WallsOccludeTheirBackSide) {
   ASSERT_EQ(views.size(), 1u);
   EXPECT_EQ(views[0].key, target);
   EXPECT_NE(views[0].ground_key, west);  // the west view is behind the occluder
+  EXPECT_EQ(views[0].ground_key, near_west);  // the east one behind the target
+}
+
+// Facade normals face the side their sensors saw (one facing per supervoxel): a view behind
+// the surface would see its back, so it is no view.
+TEST(TaskViews, AViewStandsInFrontOfTheSurface) {
+  for (const double facing_x : {1.0, -1.0}) {
+    highlevel::MapUpdate up;
+    up.full_snapshot = true;
+    highlevel::Supervoxel east;
+    east.center = {9.5, 0.5, 0.1};
+    east.surface = highlevel::SurfaceClass::kGround;
+    east.traversal_requirement = 1;
+    east.covered = true;
+    east.key = highlevel::supervoxel_key(core::cell_of(east.center, 1.0), east.surface);
+    highlevel::Supervoxel wall;
+    wall.center = {6.5, 0.5, 1.5};
+    wall.normal = {facing_x, 0.0, 0.0};
+    wall.surface = highlevel::SurfaceClass::kFacade;
+    wall.key = highlevel::supervoxel_key(core::cell_of(wall.center, 1.0), wall.surface,
+                                         facing_x > 0 ? highlevel::Facing::kPlusX : highlevel::Facing::kMinusX);
+    up.upserts = {east, wall};
+    highlevel::HighLevelMap map({2, 1});
+    map.apply(up);
+    Fixture f;
+    const MapContext ctx(map, f.options);
+    std::vector<TargetRecord> outcomes;
+    const auto views = generate_task_views(ctx, f.caps, f.options, nullptr, &outcomes);
+    if (facing_x > 0) {
+      ASSERT_EQ(views.size(), 1u) << "the wall faces the ground east of it";
+      EXPECT_EQ(views[0].ground_key, east.key);
+    } else {
+      EXPECT_TRUE(views.empty()) << "only its back is seen from the east";
+      ASSERT_EQ(outcomes.size(), 1u);
+      EXPECT_EQ(outcomes[0].outcome, TargetOutcome::kNoViewpoint);
+    }
+  }
 }
 
 std::set<std::vector<uint64_t>> cluster_key_sets(const std::vector<TaskView>& views, const std::vector<TaskCluster>& cs) {
