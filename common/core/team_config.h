@@ -129,6 +129,12 @@ struct AlgorithmParams {
   double beta_c = 1.0;
   double beta_m = 1.5;
   double beta_d = 3.0;
+  // How far ahead along the reference route the i-th cluster of a new route may match it, in
+  // reference segments (i + window); -1: any segment, the paper's literal "all such segments".
+  // Matched against the whole polyline, a route that runs the reference backwards is as close
+  // as one that follows it, and robots turned round between rounds
+  // (common/planning/README.md, "Routes that turn round").
+  int reference_window = 2;
   // Supervoxels, sharing, clustering, safety, replanning.
   double eta_e_m = 0.2;
   double eta_s_m = 1.0;

@@ -183,7 +183,7 @@ void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   const std::string path = "params";
   r.only_keys(n, path, {"map_resolution_m", "rho_th", "rho_measure", "min_ise_patch_voxels", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg",
                         "beta_i", "beta_l", "beta_zeta", "beta_varsigma", "beta_e", "beta_c", "beta_m", "beta_d",
-                        "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "ga_population",
+                        "reference_window", "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "ga_population",
                         "ga_max_generations", "ga_time_budget_s", "planner", "seed"});
   r.read(n, path, "map_resolution_m", p.map_resolution_m);
   r.read(n, path, "rho_th", p.rho_th);
@@ -209,6 +209,10 @@ void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   r.read(n, path, "beta_c", p.beta_c);
   r.read(n, path, "beta_m", p.beta_m);
   r.read(n, path, "beta_d", p.beta_d);
+  r.read(n, path, "reference_window", p.reference_window);
+  if (p.reference_window < -1)
+    r.fail(n["reference_window"], path + ".reference_window",
+           "must be >= 0, or -1 for every segment, got " + std::to_string(p.reference_window));
   r.read(n, path, "eta_e_m", p.eta_e_m);
   r.read(n, path, "eta_s_m", p.eta_s_m);
   r.read(n, path, "eta_c_s", p.eta_c_s);

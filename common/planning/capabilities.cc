@@ -56,6 +56,7 @@ PlannerOptions PlannerOptions::from(const core::AlgorithmParams& p) {
   o.beta_c = p.beta_c;
   o.beta_m = p.beta_m;
   o.beta_d = p.beta_d;
+  o.reference_window = p.reference_window;
   o.eta_s_m = p.eta_s_m;
   o.eta_r_m = p.eta_r_m;
   o.ga_population = p.ga_population;

@@ -54,6 +54,7 @@ struct PlannerOptions {
   double beta_i = 0.5, beta_l = 0.5;            // Vis weights
   double beta_zeta = 10.0, beta_varsigma = 1.0; // capability score a(k)
   double beta_e = 0.5, beta_c = 1.0, beta_m = 1.5, beta_d = 3.0;
+  int reference_window = 2;     // core::AlgorithmParams::reference_window
   double eta_s_m = 1.0;         // supervoxel seed interval (ray-cast cell size)
   double eta_r_m = 5.0;         // clustering radius and MNSS neighbourhood
   double sensor_height_m = 0.5; // view (sensor) height above its ground supervoxel centre

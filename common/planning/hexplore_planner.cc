@@ -138,7 +138,7 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
 
   std::vector<Route> routes(req.robots.size());
   if (inst.problem.num_cities > 0) {
-    const FitnessModel model(inst.problem, FitnessWeights{o.beta_c, o.beta_m, o.beta_d, o.beta_e}, ref_lines);
+    const FitnessModel model(inst.problem, FitnessWeights{o.beta_c, o.beta_m, o.beta_d, o.beta_e, o.reference_window}, ref_lines);
     GaOptions ga;
     ga.population = o.ga_population;
     ga.max_generations = o.ga_max_generations;

@@ -33,9 +33,20 @@ FitnessModel::FitnessModel(const MtspProblem& problem, FitnessWeights weights,
     if (problem.positions.size() != size_t(problem.num_nodes()))
       throw std::invalid_argument("FitnessModel: a reference route needs problem.positions for every node");
     has_reference_ = true;
+    const auto& line = reference[r];
     auto& d = city_ref_distance_[r];
     d.resize(size_t(problem.num_cities));
-    for (int c = 0; c < problem.num_cities; ++c) d[size_t(c)] = point_polyline_distance(problem.positions[size_t(c)], reference[r]);
+    for (int c = 0; c < problem.num_cities; ++c) {
+      const Eigen::Vector3d& p = problem.positions[size_t(c)];
+      auto& prefix = d[size_t(c)];
+      if (line.size() == 1) {
+        prefix = {(p - line.front()).norm()};
+        continue;
+      }
+      prefix.resize(line.size() - 1);
+      double best = kInfinity;
+      for (size_t j = 0; j + 1 < line.size(); ++j) prefix[j] = best = std::min(best, point_segment_distance(p, line[j], line[j + 1]));
+    }
   }
   has_reference_ = has_reference_ && weights_.reference != 0.0;
   decay_.resize(size_t(problem.num_cities) + 1);
@@ -47,7 +58,12 @@ double FitnessModel::reference_distance(int robot, const Route& route) const {
   const auto& d = city_ref_distance_[size_t(robot)];
   if (d.empty()) return 0.0;
   double sum = 0.0;
-  for (size_t i = 0; i < route.size(); ++i) sum += decay_[i] * d[size_t(route[i])];
+  for (size_t i = 0; i < route.size(); ++i) {
+    const auto& prefix = d[size_t(route[i])];
+    const size_t last = weights_.reference_window < 0 ? prefix.size() - 1
+                                                       : std::min(prefix.size() - 1, i + size_t(weights_.reference_window));
+    sum += decay_[i] * prefix[last];
+  }
   return sum;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The assignment fitness of the paper ("Fitness Function"):
 //   J(h) = beta_c * sum_r cost_r + beta_m * max_r cost_r + beta_d * sum_r dist(route_r, ref_r),
-// dist = sum_i e^{-beta_e * i} * (distance of the i-th city to the nearest reference segment).
+// dist = sum_i e^{-beta_e * i} * (distance of the i-th city to the nearest reference segment
+// among the first i + reference_window + 1 ones; every segment with window -1).
 // Plain min-sum and min-max are the special weights below.
 
 #include <vector>
@@ -17,11 +18,14 @@ struct FitnessWeights {
   double max = 0.0;             // beta_m
   double reference = 0.0;       // beta_d
   double position_decay = 0.5;  // beta_e
+  // The i-th city of a route is matched against the reference's segments 0 .. i + window:
+  // following the reference costs nothing, running it backwards does. -1: every segment.
+  int reference_window = -1;
 
-  static FitnessWeights min_sum() { return {1.0, 0.0, 0.0, 0.5}; }
+  static FitnessWeights min_sum() { return {1.0, 0.0, 0.0, 0.5, -1}; }
   // Min-max with a tiny total-cost tie-break so that routes that do not set the maximum are
   // still kept short (a pure max objective has large plateaus).
-  static FitnessWeights min_max() { return {1e-4, 1.0, 0.0, 0.5}; }
+  static FitnessWeights min_max() { return {1e-4, 1.0, 0.0, 0.5, -1}; }
 };
 
 // Minimum Euclidean distance from p to the segment [a, b] (the paper's L).
@@ -66,7 +70,9 @@ class FitnessModel {
   const MtspProblem* problem_;
   FitnessWeights weights_;
   bool has_reference_ = false;
-  std::vector<std::vector<double>> city_ref_distance_;  // [robot][city]
+  // [robot][city][j]: distance of the city to the nearest of the reference's segments 0..j
+  // (the last entry: to the whole polyline).
+  std::vector<std::vector<std::vector<double>>> city_ref_distance_;
   std::vector<double> decay_;                           // e^{-beta_e * i}, i = 1..n
 };
 

@@ -160,6 +160,26 @@ TEST(Fitness, ReferenceTermUsesSegmentsAndPositionDecay) {
   EXPECT_NEAR(point_segment_distance({-3, 4, 0}, {0, 0, 0}, {10, 0, 0}), 5.0, 1e-12);
 }
 
+// Against the whole polyline a route that runs the reference backwards is as close as one that
+// follows it; with a window the i-th city is matched against the reference's first i + window
+// + 1 segments only, so turning round costs and following costs nothing.
+TEST(Fitness, AWindowedReferenceTellsARouteThatRunsItBackwards) {
+  MtspProblem p = random_problem(4, {0}, 1, RouteKind::kOpen, 1, false);
+  for (int c = 0; c < 4; ++c) p.positions[size_t(c)] = {10.0 * c, 0, 0};  // cities on the reference
+  const std::vector<std::vector<Eigen::Vector3d>> ref = {{{0, 0, 0}, {10, 0, 0}, {20, 0, 0}, {30, 0, 0}}};
+  const Route forwards = {0, 1, 2, 3}, backwards = {3, 2, 1, 0};
+  const FitnessModel literal(p, FitnessWeights{0.0, 0.0, 1.0, 0.5, -1}, ref);
+  EXPECT_NEAR(literal.reference_distance(0, forwards), 0.0, 1e-12);
+  EXPECT_NEAR(literal.reference_distance(0, backwards), 0.0, 1e-12);
+  const FitnessModel windowed(p, FitnessWeights{0.0, 0.0, 1.0, 0.5, 0}, ref);
+  EXPECT_NEAR(windowed.reference_distance(0, forwards), 0.0, 1e-12);
+  // City 3 first is 20 m past segment 0; city 2 second ends segment 1, and so on.
+  EXPECT_NEAR(windowed.reference_distance(0, backwards), std::exp(-0.5) * 20.0, 1e-9);
+  const FitnessModel window1(p, FitnessWeights{0.0, 0.0, 1.0, 0.5, 1}, ref);
+  EXPECT_NEAR(window1.reference_distance(0, {1, 2, 3}), 0.0, 1e-12) << "a city done since is skipped freely";
+  EXPECT_NEAR(window1.reference_distance(0, backwards), std::exp(-0.5) * 10.0, 1e-9);
+}
+
 // With a reference the GA prefers the solution that follows it when costs tie.
 TEST(Fitness, ReferencePullsTowardsReferenceAssignment) {
   MtspProblem p;
