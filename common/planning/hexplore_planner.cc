@@ -17,6 +17,7 @@
 #include "common/planning/mnss.h"
 #include "common/planning/rng.h"
 #include "common/planning/robot_vertex.h"
+#include "common/planning/route_pruning.h"
 #include "common/planning/round_inputs.h"
 
 namespace hexplore::planning {
@@ -207,6 +208,7 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
     }
     tour.insert(tour.end(), part.begin(), part.end());
   }
+  if (ablation_ != Ablation::kNoMnss) tour = prune_route(ctx, std::move(tour), my_species, o);
   out.times.mnss_s = clock.lap();
   out.times.total_s = clock.total();
   return out;
@@ -266,8 +268,11 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
     if (int(r) == req.self && !owned[r].empty()) {
       std::vector<Eigen::Vector3d> around;
       for (int v : owned[r]) around.push_back(views[size_t(v)].position);
-      plan.route = mnss_tour(ctx, views, owned[r], around, 0.5 * o.eta_r_m, team.species[size_t(req.robots[r].species)],
-                             req.robots[r].position, std::nullopt, o, rng, nullptr, &reach[size_t(req.robots[r].species)]);
+      const SpeciesCapability& species = team.species[size_t(req.robots[r].species)];
+      plan.route = prune_route(ctx,
+                               mnss_tour(ctx, views, owned[r], around, 0.5 * o.eta_r_m, species, req.robots[r].position,
+                                         std::nullopt, o, rng, nullptr, &reach[size_t(req.robots[r].species)]),
+                               species, o);
     }
   }
   out.clusters = int(views.size()) - out.dropped_clusters;

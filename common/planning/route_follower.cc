@@ -322,7 +322,10 @@ void RouteFollower::judge(double now_s, const highlevel::HighLevelMap& map, Give
     if (!due(c)) continue;
     for (uint64_t t : c.targets) {
       const highlevel::Supervoxel* sv = map.find(t);
-      if (sv && !sv->covered) ledger.observed(t, c.spot, sv->voxel_count);
+      if (!sv) continue;  // re-segmented away since
+      ++counters_.targets_judged;
+      if (!sv->covered) ledger.observed(t, c.spot, sv->voxel_count);
+      else ++counters_.targets_complete_when_judged;
     }
   }
   pending_.erase(std::remove_if(pending_.begin(), pending_.end(), due), pending_.end());

@@ -62,6 +62,10 @@ struct FollowerCounters {
   int legs_kept = 0;            // new routes that kept the leg being driven first
   int stretch_views_kept = 0;   // views a new route kept in the old order after the leg
   double observing_s = 0.0;     // time spent standing and observing
+  // Targets of observations judged a settle time later, and those of them complete by then
+  // (what a dwell achieves in a mission; bench_view_efficacy measures it off-line).
+  int targets_judged = 0;
+  int targets_complete_when_judged = 0;
 };
 
 class RouteFollower {
