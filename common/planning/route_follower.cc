@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "common/planning/executable_path.h"
 
@@ -29,20 +30,33 @@ constexpr double kBackedOffM = 0.3;   // the back-off leg ends this close to its
 
 RouteFollower::RouteFollower(FollowerOptions options, int path_species) : options_(options), species_(path_species) {}
 
-void RouteFollower::set_route(std::vector<TaskView> route) {
+void RouteFollower::set_route(std::vector<TaskView> route, const Eigen::Vector3d& position,
+                              const highlevel::HighLevelMap& map) {
   // The leg being driven is finished first: a new round may reorder what comes after it, but
   // turning round every round (the map grows, clusters and their order change) reaches
-  // nothing. It stays first, in the new route's copy when it has one at the same spot.
+  // nothing. It stays first, in the new route's copy when it has one at the same spot, unless
+  // the new route's first view is nearer by path by switch_gain_m: then the robot turns to it
+  // (e2e scene: standing in the room's doorway, the robot kept a leg round the outside of the
+  // room, 15 m, and came back for the view inside it, 3 m away). Every such switch shortens the
+  // way to the goal, so legs cannot take turns.
   std::optional<TaskView> leg;
   if (driving_ && next_ < route_.size()) leg = route_[next_];
+  if (leg && !route.empty() && horizontal(route.front().position, leg->position) > options_.reach_m &&
+      path_length(position, route.front(), map) + options_.switch_gain_m < path_length(position, *leg, map)) {
+    leg.reset();
+    ++counters_.legs_switched;
+  }
   // So does the stretch after it: in half the rounds the new route's first cluster lies more
   // than 5 m from the old one's before the robot got there (tools/report/route_churn.py), and a
-  // robot that follows every new head drives back and forth between neighbourhoods.
+  // robot that follows every new head drives back and forth between neighbourhoods. The
+  // stretch is measured along paths too: a view behind a wall is not "just after" the leg.
   std::vector<Eigen::Vector3d> stretch;
   if (leg || observing_) {
     const Eigen::Vector3d anchor = leg ? leg->position : observe_spot_;
     for (size_t i = next_ + (leg ? 1 : 0); i < route_.size(); ++i) {
-      if (horizontal(route_[i].position, anchor) > options_.keep_stretch_m) break;
+      if (horizontal(route_[i].position, anchor) > options_.keep_stretch_m ||
+          path_length(anchor, route_[i], map) > options_.keep_stretch_m)
+        break;
       stretch.push_back(route_[i].position);
     }
   }
@@ -64,11 +78,28 @@ void RouteFollower::set_route(std::vector<TaskView> route) {
   progress_s_ = -1.0;
   // An observation in progress is finished first (the cost model paid for it); views of the
   // new route at the spot being observed are part of it.
-  while (observing_ && next_ < route_.size() && horizontal(route_[next_].position, observe_spot_) <= options_.reach_m) {
+  while (observing_ && next_ < route_.size() && reached(route_[next_], observe_spot_)) {
     const auto& targets = route_[next_++].targets;
     observed_targets_.insert(observed_targets_.end(), targets.begin(), targets.end());
   }
   keep_stretch(next_, stretch);
+}
+
+double RouteFollower::path_length(const Eigen::Vector3d& from, const TaskView& view,
+                                  const highlevel::HighLevelMap& map) const {
+  const ExecutablePlan path = executable_path(map.graph(), from, species_, view, &avoid_);
+  if (!path.valid) return std::numeric_limits<double>::infinity();
+  double length = 0.0;
+  Eigen::Vector3d at = from;
+  for (const auto& w : path.waypoints) {
+    length += horizontal(at, w);
+    at = w;
+  }
+  return length;
+}
+
+bool RouteFollower::reached(const TaskView& view, const Eigen::Vector3d& position) const {
+  return horizontal(view.position, position) <= (view.facade ? options_.observe_reach_m : options_.reach_m);
 }
 
 void RouteFollower::keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch) {
@@ -136,7 +167,7 @@ std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector
     driving_ = false;
   }
   if (next_ >= route_.size()) return std::nullopt;
-  if (horizontal(route_[next_].position, position) <= options_.reach_m) {
+  if (reached(route_[next_], position)) {
     std::optional<MotionOrder> order = begin_observing(now_s, position, map, ledger);
     return observing_ ? order : drive(position, map, keep_off, ledger);  // ground views: on to the next
   }
@@ -156,7 +187,7 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
   observed_targets_.clear();
   aims_.clear();
   int facade_views = 0;
-  for (; next_ < route_.size() && horizontal(route_[next_].position, position) <= options_.reach_m; ++next_) {
+  for (; next_ < route_.size() && reached(route_[next_], position); ++next_) {
     const TaskView& v = route_[next_];
     ++counters_.views_reached;
     bool facade_open = false;

@@ -29,16 +29,22 @@
 namespace hexplore::planning {
 
 struct FollowerOptions {
-  double reach_m = 1.0;             // a view counts as reached within this horizontal distance
+  double reach_m = 1.0;             // a ground view counts as reached within this horizontal distance
+  // A facade view is observed only from within this distance of its spot: what the view was
+  // chosen for (incidence, range, line of sight) holds there, not 1 m short of it (e2e scene,
+  // seed 1: the SLUGCAT "observed" a view inside the room from its doorway, three times).
+  double observe_reach_m = 0.3;
   double blocked_s = 2.0;           // blocked by terrain this long: skip the view
   double stuck_s = 8.0;             // no 0.5 m of progress this long: skip the view
   double observation_time_s = 0.0;  // dwell at a facade view: 1 / vartheta_varsigma of the species
   double min_aim_s = 0.5;           // shortest time the sensors stay on one target of a sweep
   double settle_s = 2.0;            // map lag: coverage is judged this long after the observation
   // A new round keeps the stretch being worked on: the old route's views that followed the leg
-  // (or the spot being observed) within this distance of it, and that the new route still
+  // (or the spot being observed) within this distance of it (straight and along the path), and that the new route still
   // has, come next in their old order. 0: only the leg is kept.
   double keep_stretch_m = 5.0;
+  // The leg being driven gives way to a new route's first view that is this much nearer by path.
+  double switch_gain_m = 3.0;
 };
 
 // How the driver reports its motion (a v1::MotionState without the protobuf).
@@ -60,6 +66,7 @@ struct FollowerCounters {
   int views_done_before = 0;    // every target complete or given up before the robot got there
   int dwells_cut_short = 0;     // every target complete before the dwell was over
   int legs_kept = 0;            // new routes that kept the leg being driven first
+  int legs_switched = 0;        // new routes whose first view was much nearer than the leg's
   int stretch_views_kept = 0;   // views a new route kept in the old order after the leg
   double observing_s = 0.0;     // time spent standing and observing
   // Targets of observations judged a settle time later, and those of them complete by then
@@ -73,10 +80,11 @@ class RouteFollower {
   // `path_species`: the species index whose graph levels the paths use.
   RouteFollower(FollowerOptions options, int path_species);
 
-  // A new route (a planning round). The leg being driven and an observation in progress are
+  // A new route (a planning round) for the robot at `position`. The leg being driven (unless
+  // the new first view is switch_gain_m nearer by path) and an observation in progress are
   // finished first; the new route's views at the same spot join them, and the views of the
   // stretch that followed them come next (FollowerOptions::keep_stretch_m).
-  void set_route(std::vector<TaskView> route);
+  void set_route(std::vector<TaskView> route, const Eigen::Vector3d& position, const highlevel::HighLevelMap& map);
   void set_path_species(int species) { species_ = species; }
   // Drops the route, the leg and any observation (another planner takes over).
   void clear();
@@ -118,6 +126,9 @@ class RouteFollower {
   void track_progress(double now_s, const Eigen::Vector3d& position, DriveState state);
   void judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch);
+  bool reached(const TaskView& view, const Eigen::Vector3d& position) const;  // reach_m / observe_reach_m
+  // Along the executable path (infinite without one).
+  double path_length(const Eigen::Vector3d& from, const TaskView& view, const highlevel::HighLevelMap& map) const;
 
   FollowerOptions options_;
   int species_;

@@ -88,10 +88,12 @@ void PlanningService::setup(service::ServiceContext& context) {
   ledger_ = planning::GiveUpLedger(rules);
   planning::FollowerOptions follow;
   follow.reach_m = parse_positive(args, "reach-m", follow.reach_m);
+  follow.observe_reach_m = parse_positive(args, "observe-reach-m", follow.observe_reach_m);
   follow.blocked_s = parse_positive(args, "blocked-s", follow.blocked_s);
   follow.stuck_s = parse_positive(args, "stuck-s", follow.stuck_s);
   follow.settle_s = parse_positive(args, "settle-s", follow.settle_s);
   follow.keep_stretch_m = parse_positive(args, "keep-stretch-m", follow.keep_stretch_m);
+  follow.switch_gain_m = parse_positive(args, "switch-gain-m", follow.switch_gain_m);
   // The cost model charges 1 / observation speed per facade view; execution spends it.
   follow.observation_time_s = species->observation_speed_views_per_s > 0 ? 1.0 / species->observation_speed_views_per_s : 0.0;
   if (auto it = args.find("observe"); it != args.end()) {
@@ -337,6 +339,10 @@ void PlanningService::follow_route() {
   const auto order = follower_->step(core::ns_to_s(now_ns()), positions_.at(robot_id_), drive_state(), *map_,
                                      avoided_vertices(), ledger_);
   if (!order) return;
+  core::LogLine(core::LogLevel::kDebug, "planning")
+      << robot_id_ << ": at (" << positions_.at(robot_id_).head<2>().transpose() << ") "
+      << (order->observing ? "observing, aim " : "path to ") << "(" << order->path.goal.position.head<2>().transpose()
+      << "), " << order->path.waypoints.size() << " waypoints";
   v1::ExecutablePath path = planning::path_to_proto(round_, order->path, speed_mps_);
   path.set_observing(order->observing);
   context_->publisher().publish(topics::path(robot_id_), path);
@@ -428,7 +434,7 @@ void PlanningService::replan(const std::string& reason) {
   pub.publish(std::string(topics::kTeamPlan), solution);
   pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route));
   follower_->set_path_species(res.path_species >= 0 ? res.path_species : species_index_);
-  follower_->set_route(route);
+  follower_->set_route(route, positions_.at(robot_id_), *map_);
   // Traced after the follower merged the route: the trace shows where the robot heads next.
   if (trace_.is_open()) write_trace(reason, req, res);
   follow_route();  // the path to the first view at once

@@ -36,7 +36,7 @@ TEST(RoundTrace, OneLineWithTheRouteTheReferenceAndWhereTheFollowerHeads) {
   EXPECT_NE(line.find("\"t\": 12.5"), std::string::npos);
   EXPECT_NE(line.find("\"reference\": \"mr1000a\""), std::string::npos);
   EXPECT_NE(line.find("\"route\": [{\"p\": [1.00, 2.00, 0.00], \"facade\": 1, \"targets\": 2}]"), std::string::npos);
-  EXPECT_NE(line.find("\"legs_kept\": 4, \"stretch_views_kept\": 3"), std::string::npos);
+  EXPECT_NE(line.find("\"legs_kept\": 4, \"legs_switched\": 0, \"stretch_views_kept\": 3"), std::string::npos);
   EXPECT_NE(line.find("\"next\": [[3.00, 4.00, 0.00], [5.00, 6.00, 0.00]]}}"), std::string::npos) << line;
 }
 

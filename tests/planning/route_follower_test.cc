@@ -72,7 +72,7 @@ TEST(RouteFollower, DrivesToTheFirstViewAlongItsPath) {
   Drive d;
   RouteFollower f(d.options, 0);
   const TaskView goal = view_at(d.map, {8.5, 4.5, 0}, false);
-  f.set_route({goal});
+  f.set_route({goal}, {1.5, 1.5, 0}, d.map);
   const auto order = f.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger);
   ASSERT_TRUE(order);
   EXPECT_FALSE(order->observing);
@@ -89,7 +89,7 @@ TEST(RouteFollower, StopsAtAFacadeViewForTheObservationTimeThenMovesOn) {
   RouteFollower f(d.options, 0);
   const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
   const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
-  f.set_route({facade, next});
+  f.set_route({facade, next}, {1.5, 1.5, 0}, d.map);
   const Eigen::Vector3d at = facade.position;
   const auto order = f.step(0.0, at, DriveState::kIdle, d.map, d.keep_off, d.ledger);
   ASSERT_TRUE(order);
@@ -109,12 +109,29 @@ TEST(RouteFollower, StopsAtAFacadeViewForTheObservationTimeThenMovesOn) {
   EXPECT_NEAR(f.counters().observing_s, 10.0, 0.3);
 }
 
+TEST(RouteFollower, AFacadeViewIsObservedFromItsSpotNotNearIt) {
+  // 0.8 m short of the spot the view was chosen for: drive on (a ground view would be reached).
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  f.set_route({facade}, {1.5, 1.5, 0}, d.map);
+  const Eigen::Vector3d short_of = facade.position - Eigen::Vector3d(0.8, 0, 0);
+  const auto drive = f.step(0.0, short_of, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(drive);
+  EXPECT_FALSE(drive->observing);
+  EXPECT_EQ(drive->path.goal.ground_key, facade.ground_key);
+  const Eigen::Vector3d there = facade.position + Eigen::Vector3d(0.2, 0, 0);
+  const auto observe = f.step(2.0, there, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(observe);
+  EXPECT_TRUE(observe->observing);
+}
+
 TEST(RouteFollower, AGroundViewIsDoneOnArrival) {
   Drive d;
   RouteFollower f(d.options, 0);
   const TaskView ground = view_at(d.map, {4.5, 4.5, 0}, false);
   const TaskView next = view_at(d.map, {10.5, 4.5, 0}, false);
-  f.set_route({ground, next});
+  f.set_route({ground, next}, {1.5, 1.5, 0}, d.map);
   const auto order = f.step(0.0, ground.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
   ASSERT_TRUE(order);
   EXPECT_FALSE(order->observing);
@@ -125,10 +142,10 @@ TEST(RouteFollower, ANewRouteDoesNotCutAnObservationShort) {
   Drive d;
   RouteFollower f(d.options, 0);
   const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
-  f.set_route({facade});
+  f.set_route({facade}, {1.5, 1.5, 0}, d.map);
   ASSERT_TRUE(f.step(0.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
   const TaskView elsewhere = view_at(d.map, {1.5, 1.5, 0}, false);
-  f.set_route({elsewhere});  // a replanning round at 5 s
+  f.set_route({elsewhere}, facade.position, d.map);  // a replanning round at 5 s
   EXPECT_TRUE(f.observing());
   EXPECT_FALSE(f.step(5.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
   const auto leave = f.step(10.1, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
@@ -141,7 +158,7 @@ TEST(RouteFollower, CoverageIsJudgedASettleTimeAfterTheObservation) {
   d.options.observation_time_s = 1.0;
   RouteFollower f(d.options, 0);
   const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
-  f.set_route({facade});
+  f.set_route({facade}, {1.5, 1.5, 0}, d.map);
   f.step(0.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
   f.step(1.1, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);  // observed, settling
   EXPECT_EQ(d.ledger.attempts(kWall), 0);
@@ -152,7 +169,7 @@ TEST(RouteFollower, CoverageIsJudgedASettleTimeAfterTheObservation) {
   Drive e;
   e.options.observation_time_s = 1.0;
   RouteFollower g(e.options, 0);
-  g.set_route({facade});
+  g.set_route({facade}, {1.5, 1.5, 0}, e.map);
   g.step(0.0, facade.position, DriveState::kIdle, e.map, e.keep_off, e.ledger);
   g.step(1.1, facade.position, DriveState::kIdle, e.map, e.keep_off, e.ledger);
   set_covered(e.map, kWall);
@@ -165,7 +182,7 @@ TEST(RouteFollower, BlockedOnTheWaySkipsTheViewBacksOffAndCountsAnAttempt) {
   RouteFollower f(d.options, 0);
   const TaskView far = view_at(d.map, {10.5, 1.5, 0}, true);
   const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
-  f.set_route({far, next});
+  f.set_route({far, next}, {1.5, 1.5, 0}, d.map);
   // Drive a little east, leaving a trail, then get blocked.
   double t = 0.0;
   for (double x = 1.5; x <= 4.0; x += 0.25, t += 0.5)
@@ -199,7 +216,7 @@ TEST(RouteFollower, AViewCutOffByASilentTeammateCountsAnAttemptEachRound) {
   const int rounds = d.ledger.rules().attempts;
   for (int round = 1; round <= rounds; ++round) {
     EXPECT_FALSE(d.ledger.given_up(target, d.map.find(target)->voxel_count));
-    f.set_route({beyond});
+    f.set_route({beyond}, {1.5, 1.5, 0}, d.map);
     EXPECT_FALSE(f.step(double(round), {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
     EXPECT_TRUE(f.finished());
     if (round < rounds) EXPECT_EQ(d.ledger.attempts(target), round);
@@ -211,7 +228,7 @@ TEST(RouteFollower, AViewCutOffByASilentTeammateCountsAnAttemptEachRound) {
   RouteFollower g(e.options, 0);
   TaskView nowhere = view_at(e.map, {10.5, 4.5, 0}, false);
   nowhere.ground_key = 999'999'999;  // not a vertex of the graph
-  g.set_route({nowhere});
+  g.set_route({nowhere}, {1.5, 1.5, 0}, e.map);
   g.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, e.map, e.keep_off, e.ledger);
   EXPECT_EQ(g.counters().views_without_path, 1);
   EXPECT_EQ(e.ledger.attempts(nowhere.targets.front()), 0);
@@ -226,7 +243,7 @@ TEST(RouteFollower, BacksOffAsALegOfItsOwnThenPlansTheNextPathFromThere) {
   RouteFollower f(d.options, 0);
   const TaskView first = view_at(d.map, {10.5, 1.5, 0}, true);
   const TaskView beyond = view_at(d.map, {10.5, 3.5, 0}, false);
-  f.set_route({first, beyond});
+  f.set_route({first, beyond}, {1.5, 1.5, 0}, d.map);
   double t = 0.0;
   for (double x = 1.5; x <= 5.0; x += 0.25, t += 0.5)
     f.step(t, {x, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
@@ -248,7 +265,7 @@ TEST(RouteFollower, BacksOffAsALegOfItsOwnThenPlansTheNextPathFromThere) {
   EXPECT_LT((on->path.waypoints.front() - back).head<2>().norm(), 1.0);
   // A back-off that is itself blocked ends after the blocked time, and the path is planned from there.
   RouteFollower g(d.options, 0);
-  g.set_route({first, beyond});
+  g.set_route({first, beyond}, {1.5, 1.5, 0}, d.map);
   t = 0.0;
   for (double x = 1.5; x <= 5.0; x += 0.25, t += 0.5)
     g.step(t, {x, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
@@ -267,7 +284,7 @@ TEST(RouteFollower, ADwellEndsAsSoonAsItsTargetsAreComplete) {
   RouteFollower f(d.options, 0);
   const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
   const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
-  f.set_route({facade, next});
+  f.set_route({facade, next}, {1.5, 1.5, 0}, d.map);
   ASSERT_TRUE(f.step(0.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
   EXPECT_FALSE(f.step(3.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
   set_covered(d.map, kWall);
@@ -283,7 +300,7 @@ TEST(RouteFollower, ViewsWhoseTargetsAreDoneArePassedBy) {
   const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
   const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
   set_covered(d.map, kWall);  // a teammate completed it
-  f.set_route({facade, next});
+  f.set_route({facade, next}, {1.5, 1.5, 0}, d.map);
   const auto order = f.step(0.0, {10.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger);
   ASSERT_TRUE(order);
   EXPECT_EQ(order->path.goal.ground_key, next.ground_key);
@@ -292,7 +309,7 @@ TEST(RouteFollower, ViewsWhoseTargetsAreDoneArePassedBy) {
   Drive e;
   e.ledger.merge(kWall, 40);
   RouteFollower g(e.options, 0);
-  g.set_route({facade, next});
+  g.set_route({facade, next}, {1.5, 1.5, 0}, e.map);
   const auto other = g.step(0.0, facade.position, DriveState::kIdle, e.map, e.keep_off, e.ledger);
   ASSERT_TRUE(other);
   EXPECT_FALSE(other->observing);
@@ -304,18 +321,18 @@ TEST(RouteFollower, ANewRouteKeepsTheLegBeingDriven) {
   RouteFollower f(d.options, 0);
   const TaskView east = view_at(d.map, {10.5, 1.5, 0}, false);
   const TaskView north = view_at(d.map, {1.5, 6.5, 0}, false);
-  f.set_route({east, north});
+  f.set_route({east, north}, {1.5, 1.5, 0}, d.map);
   ASSERT_TRUE(f.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
   f.step(5.0, {3.5, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
   // A new round puts north first: east is still finished first (its path planned again).
-  f.set_route({north, east});
+  f.set_route({north, east}, {3.6, 1.5, 0}, d.map);
   ASSERT_EQ(f.route().front().ground_key, east.ground_key);
   EXPECT_EQ(f.route().size(), 2u);
   const auto again = f.step(5.2, {3.6, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
   ASSERT_TRUE(again);
   EXPECT_EQ(again->path.goal.ground_key, east.ground_key);
   // A round without it: it is kept in front of the new route.
-  f.set_route({north});
+  f.set_route({north}, {3.6, 1.5, 0}, d.map);
   ASSERT_EQ(f.route().size(), 2u);
   EXPECT_EQ(f.route().front().ground_key, east.ground_key);
   EXPECT_EQ(f.counters().legs_kept, 2);
@@ -339,7 +356,7 @@ TEST(RouteFollower, ANewRouteKeepsTheStretchAfterTheLegInItsOldOrder) {
   const TaskView e = view_at(d.map, {10.5, 1.5, 0}, false);
   auto driving_to_a = [&](FollowerOptions options) {
     auto f = std::make_unique<RouteFollower>(options, 0);
-    f->set_route({a, b, far, c});
+    f->set_route({a, b, far, c}, {1.5, 1.5, 0}, d.map);
     EXPECT_TRUE(f->step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
     f->step(2.0, {2.5, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
     return f;
@@ -348,14 +365,14 @@ TEST(RouteFollower, ANewRouteKeepsTheStretchAfterTheLegInItsOldOrder) {
     // The new head is elsewhere: the leg a, then b (the stretch ends at far, so c is not
     // kept), then the new route's order.
     auto f = driving_to_a(d.options);
-    f->set_route({far, c, e, b, a});
+    f->set_route({far, c, e, b, a}, {2.5, 1.5, 0}, d.map);
     EXPECT_EQ(ground_keys(f->route()), ground_keys({a, b, far, c, e}));
     EXPECT_EQ(f->counters().stretch_views_kept, 1);
   }
   {
     // A stretch view the new route no longer has (complete, or a teammate's now) is not put back.
     auto f = driving_to_a(d.options);
-    f->set_route({far, e, a});
+    f->set_route({far, e, a}, {2.5, 1.5, 0}, d.map);
     EXPECT_EQ(ground_keys(f->route()), ground_keys({a, far, e}));
     EXPECT_EQ(f->counters().stretch_views_kept, 0);
   }
@@ -364,9 +381,53 @@ TEST(RouteFollower, ANewRouteKeepsTheStretchAfterTheLegInItsOldOrder) {
     FollowerOptions options = d.options;
     options.keep_stretch_m = 0.5;
     auto f = driving_to_a(options);
-    f->set_route({far, c, e, b, a});
+    f->set_route({far, c, e, b, a}, {2.5, 1.5, 0}, d.map);
     EXPECT_EQ(ground_keys(f->route()), ground_keys({a, far, c, e, b}));
   }
+}
+
+TEST(RouteFollower, ANewFirstViewMuchNearerByPathThanTheLegTakesOver) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView east = view_at(d.map, {10.5, 1.5, 0}, false);
+  const TaskView behind = view_at(d.map, {2.5, 1.5, 0}, false);
+  f.set_route({east}, {1.5, 1.5, 0}, d.map);
+  ASSERT_TRUE(f.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  f.step(4.0, {3.6, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  // 1 m back against 7 m on: the robot turns to the new first view.
+  f.set_route({behind, east}, {3.6, 1.5, 0}, d.map);
+  EXPECT_EQ(ground_keys(f.route()), ground_keys({behind, east}));
+  EXPECT_EQ(f.counters().legs_switched, 1);
+  EXPECT_EQ(f.counters().legs_kept, 0);
+  const auto order = f.step(4.2, {3.6, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(order);
+  EXPECT_EQ(order->path.goal.ground_key, behind.ground_key);
+}
+
+TEST(RouteFollower, AViewBehindAWallIsNotPartOfTheStretch) {
+  // A wall from y = 0 to 7 m at x = 4..6 m; the way round it is by the north edge.
+  core::TeamConfig team;
+  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
+  highlevel::HighLevelMap map(highlevel::species_levels(team));
+  SyntheticSceneOptions scene;
+  scene.width_cells = 12;
+  scene.depth_cells = 8;
+  scene.buildings = {{4, 0, 5, 6, 2}};
+  scene.rubble = {};
+  scene.covered_fraction = 0.0;
+  map.apply(synthetic_scene(scene));
+  GiveUpLedger ledger;
+  const std::unordered_set<uint64_t> keep_off;
+  const TaskView a = view_at(map, {3.5, 1.5, 0}, false);
+  const TaskView beyond = view_at(map, {6.5, 1.5, 0}, false);  // 3 m from a straight, 15 m round
+  const TaskView north = view_at(map, {1.5, 5.5, 0}, false);
+  RouteFollower f(FollowerOptions{}, 0);
+  f.set_route({a, beyond, north}, {1.5, 1.5, 0}, map);
+  ASSERT_TRUE(f.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, map, keep_off, ledger));
+  f.step(1.0, {2.0, 1.5, 0}, DriveState::kMoving, map, keep_off, ledger);
+  f.set_route({north, beyond, a}, {2.0, 1.5, 0}, map);
+  EXPECT_EQ(ground_keys(f.route()), ground_keys({a, north, beyond}));
+  EXPECT_EQ(f.counters().stretch_views_kept, 0);
 }
 
 TEST(GiveUpLedger, GivesUpAfterTwoDistinctSpotsOrThreeTries) {
