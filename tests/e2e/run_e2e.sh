@@ -42,6 +42,9 @@ transport:
   base_port: $port
 params:
   seed: 1
+  # As in deploy/teams: the simulated LiDARs fire at 2 Hz, a fifth of the paper's point rate.
+  rho_th: 0.06
+  min_ise_patch_voxels: 5
 YAML
 
 fail() {
