@@ -101,21 +101,9 @@ std::vector<TaskView> mnss_tour(const MapContext& ctx, const std::vector<TaskVie
   std::vector<std::vector<int>> seen_by(T);
   for (size_t c = 0; c < candidates.size(); ++c) {
     const auto* g = candidates[c];
-    const Eigen::Vector3d sensor = g->center + g->normal.normalized() * o.sensor_height_m;
     for (size_t t = 0; t < T; ++t) {
-      const auto* sv = targets[t];
-      double score = 0.0;
-      if (sv->facade()) {
-        const ViewGeometry geo = view_geometry(sensor, g->normal, sv->center, sv->normal);
-        if (geo.distance_m >= species.observation_range_m || !angles_ok(geo, o)) continue;
-        ++st.rays;
-        if (!ctx.occlusion.clear(sensor, sv->center)) continue;
-        score = visibility_score(geo, o);
-      } else {
-        const double d = (g->center - sv->center).norm();
-        if (d > o.ground_cover_radius_m) continue;
-        score = 1.0 / (o.beta_l * d + 1e-3);
-      }
+      const double score = ground_view_score(*g, *targets[t], species.observation_range_m, ctx.occlusion, o, st.rays);
+      if (score <= 0.0) continue;
       sees[c].push_back({int(t), score});
       seen_by[t].push_back(int(c));
     }

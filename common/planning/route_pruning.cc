@@ -27,29 +27,16 @@ std::vector<TaskView> prune_route(const MapContext& ctx, std::vector<TaskView> r
   // What each view sees of them: its own targets (MNSS chose it for them), facade targets that
   // pass J from where it stands, ground targets within the composite radius.
   const size_t V = route.size(), T = targets.size();
-  const double range2 = species.observation_range_m * species.observation_range_m;
   std::vector<std::vector<int>> sees(V), seen_by(T);
   for (size_t v = 0; v < V; ++v) {
     std::vector<char> mark(T, 0);
     for (uint64_t t : route[v].targets)
       if (auto it = target_index.find(t); it != target_index.end()) mark[size_t(it->second)] = 1;
     const highlevel::Supervoxel* ground = ctx.map.find(route[v].ground_key);
-    if (ground != nullptr) {
-      const Eigen::Vector3d sensor = ground->center + ground->normal.normalized() * o.sensor_height_m;
-      for (size_t t = 0; t < T; ++t) {
-        if (mark[t]) continue;
-        const highlevel::Supervoxel* sv = targets[t];
-        if (!sv->facade()) {
-          mark[t] = (sv->center - ground->center).norm() <= o.ground_cover_radius_m;
-          continue;
-        }
-        if ((sv->center - sensor).squaredNorm() >= range2) continue;
-        const ViewGeometry geo = view_geometry(sensor, ground->normal, sv->center, sv->normal);
-        if (!angles_ok(geo, o)) continue;
-        ++st.rays;
-        mark[t] = ctx.occlusion.clear(sensor, sv->center);
-      }
-    }
+    if (ground != nullptr)
+      for (size_t t = 0; t < T; ++t)
+        if (!mark[t])
+          mark[t] = ground_view_score(*ground, *targets[t], species.observation_range_m, ctx.occlusion, o, st.rays) > 0.0;
     for (size_t t = 0; t < T; ++t)
       if (mark[t]) {
         sees[v].push_back(int(t));

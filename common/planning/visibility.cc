@@ -56,4 +56,17 @@ bool angles_ok(const ViewGeometry& g, const PlannerOptions& o) {
          g.elevation_rad <= o.theta_u_deg * kDegToRad;
 }
 
+double ground_view_score(const highlevel::Supervoxel& ground, const highlevel::Supervoxel& target, double range_m,
+                         const OcclusionGrid& occlusion, const PlannerOptions& o, int64_t& rays) {
+  if (!target.facade()) {
+    const double d = (ground.center - target.center).norm();
+    return d > o.ground_cover_radius_m ? 0.0 : 1.0 / (o.beta_l * d + 1e-3);
+  }
+  const Eigen::Vector3d sensor = ground.center + ground.normal.normalized() * o.sensor_height_m;
+  const ViewGeometry geo = view_geometry(sensor, ground.normal, target.center, target.normal);
+  if (geo.distance_m >= range_m || !angles_ok(geo, o)) return 0.0;
+  ++rays;
+  return occlusion.clear(sensor, target.center) ? visibility_score(geo, o) : 0.0;
+}
+
 }  // namespace hexplore::planning

@@ -47,4 +47,11 @@ inline double visibility_score(const ViewGeometry& g, const PlannerOptions& o) {
   return 1.0 / (o.beta_i * g.incidence_rad + o.beta_l * g.distance_m + 1e-9);
 }
 
+// What a robot standing on the ground supervoxel `ground` scores for `target` (MNSS and route
+// pruning ask the same question): a facade target nearer than `range_m` from the sensor that
+// passes J (angles, then a line of sight through `occlusion`, counted in `rays`) scores Vis; a
+// ground target within the composite radius scores 1 / (beta_l d). 0: not seen.
+double ground_view_score(const highlevel::Supervoxel& ground, const highlevel::Supervoxel& target, double range_m,
+                         const OcclusionGrid& occlusion, const PlannerOptions& o, int64_t& rays);
+
 }  // namespace hexplore::planning

@@ -12,21 +12,30 @@
 namespace hexplore::planning {
 namespace {
 
-// A flat 12 x 8 m ground grid with one facade supervoxel (key kWall) beside it; the second
-// species index is unused here.
 constexpr uint64_t kWall = 1'000'001;
 
-highlevel::HighLevelMap flat_map() {
-  core::TeamConfig team;
-  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
-  highlevel::HighLevelMap map(highlevel::species_levels(team));
+// A 12 x 8 m synthetic ground grid with these buildings (walls), nothing covered yet.
+SyntheticSceneOptions small_scene(std::vector<SyntheticBuilding> buildings) {
   SyntheticSceneOptions scene;
   scene.width_cells = 12;
   scene.depth_cells = 8;
-  scene.buildings = {};
+  scene.buildings = std::move(buildings);
   scene.rubble = {};
   scene.covered_fraction = 0.0;
-  highlevel::MapUpdate u = synthetic_scene(scene);
+  return scene;
+}
+
+// An empty map for the team's two species (the second species index is unused here).
+highlevel::HighLevelMap team_map() {
+  core::TeamConfig team;
+  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
+  return highlevel::HighLevelMap(highlevel::species_levels(team));
+}
+
+// A flat 12 x 8 m ground grid with one facade supervoxel (key kWall) beside it.
+highlevel::HighLevelMap flat_map() {
+  highlevel::HighLevelMap map = team_map();
+  highlevel::MapUpdate u = synthetic_scene(small_scene({}));
   highlevel::Supervoxel wall;
   wall.key = kWall;
   wall.center = {6.5, 9.0, 1.5};
@@ -406,16 +415,8 @@ TEST(RouteFollower, ANewFirstViewMuchNearerByPathThanTheLegTakesOver) {
 
 TEST(RouteFollower, AViewBehindAWallIsNotPartOfTheStretch) {
   // A wall from y = 0 to 7 m at x = 4..6 m; the way round it is by the north edge.
-  core::TeamConfig team;
-  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
-  highlevel::HighLevelMap map(highlevel::species_levels(team));
-  SyntheticSceneOptions scene;
-  scene.width_cells = 12;
-  scene.depth_cells = 8;
-  scene.buildings = {{4, 0, 5, 6, 2}};
-  scene.rubble = {};
-  scene.covered_fraction = 0.0;
-  map.apply(synthetic_scene(scene));
+  highlevel::HighLevelMap map = team_map();
+  map.apply(synthetic_scene(small_scene({{4, 0, 5, 6, 2}})));
   GiveUpLedger ledger;
   const std::unordered_set<uint64_t> keep_off;
   const TaskView a = view_at(map, {3.5, 1.5, 0}, false);
