@@ -59,11 +59,29 @@ def port_free(port):
             return False
 
 
+def ephemeral_range():
+    """The kernel's range for the local ports of outgoing connections (Linux default 32768-60999)."""
+    try:
+        low, high = map(int, pathlib.Path("/proc/sys/net/ipv4/ip_local_port_range").read_text().split())
+        return low, high
+    except (OSError, ValueError):
+        return 32768, 60999
+
+
 def pick_ports():
-    """A transport base, a metrics base and a Prometheus port whose every derived port is free."""
+    """A transport base, a metrics base and a Prometheus port whose every derived port is free.
+
+    All of them lie below the kernel's ephemeral range: a port inside it can be taken, between
+    our check and our bind, by the local end of any outgoing connection (the services connect to
+    each other and Prometheus scrapes them), and then Prometheus or a service fails to bind."""
     slots = len(ROBOTS) + 1
+    span = slots * PORTS_PER_ROBOT + 10 + slots * 10 + 10 + 1
+    low = 20000
+    high = min(ephemeral_range()[0], 65536) - span
+    if high <= low:
+        low, high = 10000, 20000 - span
     for _ in range(200):
-        base = random.randrange(20000, 50000, 100)
+        base = random.randrange(low, high, 100)
         metrics = base + slots * PORTS_PER_ROBOT + 10
         prom = metrics + slots * 10 + 10
         wanted = [base + i for i in range(slots * PORTS_PER_ROBOT)]
@@ -164,20 +182,22 @@ def main(argv):
     keep_logs = False
     try:
         start = time.monotonic()
-        for robot, service, _ in targets(metrics):
-            cmd = [exes[service], "--config", str(work / "team.yaml"), "--robot", robot, "--log-level", "warn"]
-            log = open(work / f"{robot}-{service}.log", "w")
-            processes.append((f"{robot}-{service}", subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, cwd=work)))
+        # Prometheus first: its port must be ours before the services open connections.
         log = open(work / "prometheus.log", "w")
         processes.append(("prometheus", subprocess.Popen(
             [prometheus, f"--config.file={work / 'prometheus.yml'}", f"--storage.tsdb.path={work / 'tsdb'}",
              f"--web.listen-address=127.0.0.1:{prom_port}"], stdout=log, stderr=subprocess.STDOUT)))
+        for robot, service, _ in targets(metrics):
+            cmd = [exes[service], "--config", str(work / "team.yaml"), "--robot", robot, "--log-level", "warn"]
+            log = open(work / f"{robot}-{service}.log", "w")
+            processes.append((f"{robot}-{service}", subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, cwd=work)))
         expected = len(targets(metrics))
         while time.monotonic() - start < DEADLINE_S:
             dead = [(n, p.returncode) for n, p in processes if p.poll() is not None]
             if dead:
                 keep_logs = True
-                raise RuntimeError(f"exited early: {dead}; logs in {work}")
+                tail = (work / "prometheus.log").read_text()[-1500:] if any(n == "prometheus" for n, _ in dead) else ""
+                raise RuntimeError(f"exited early: {dead}; logs in {work}" + (f"\nprometheus.log ends:\n{tail}" if tail else ""))
             up, total = targets_up(prom_port)
             if up == expected:
                 break
