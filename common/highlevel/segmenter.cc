@@ -59,32 +59,6 @@ void SegmenterParams::validate() const {
   if (min_ise_patch_voxels < 1) fail("min_ise_patch_voxels must be >= 1, got " + std::to_string(min_ise_patch_voxels));
 }
 
-void SupervoxelSegmenter::Stats::add(const VoxelSample& v, int sign, size_t species) {
-  if (low_risk.size() < species) low_risk.resize(species, 0);
-  count += sign;
-  if (v.covered()) covered += sign;
-  else gaps[size_t(v.gap)] += sign;
-  for (int i = 0; i < 3; ++i) {
-    mean_um[i] += sign * std::llround(double{v.mean[i]} * 1e6);
-    normal_u[i] += sign * std::llround(double{v.normal[i]} * 1e6);
-  }
-  for (size_t k = 0; k < species && k < 32; ++k) {
-    if ((v.low_risk_species_mask >> k) & 1u) low_risk[k] += sign;
-  }
-}
-
-void SupervoxelSegmenter::Stats::add(const Stats& s) {
-  if (low_risk.size() < s.low_risk.size()) low_risk.resize(s.low_risk.size(), 0);
-  count += s.count;
-  covered += s.covered;
-  for (int g = 0; g < core::kCoverageGapCount; ++g) gaps[g] += s.gaps[g];
-  for (int i = 0; i < 3; ++i) {
-    mean_um[i] += s.mean_um[i];
-    normal_u[i] += s.normal_u[i];
-  }
-  for (size_t k = 0; k < s.low_risk.size(); ++k) low_risk[k] += s.low_risk[k];
-}
-
 SupervoxelSegmenter::SupervoxelSegmenter(SegmenterParams params, std::vector<int> species_levels)
     : params_(params), levels_(std::move(species_levels)) {
   params_.validate();
@@ -358,32 +332,11 @@ size_t SupervoxelSegmenter::relabel(const std::unordered_set<uint64_t>& dirty_se
 }
 
 Supervoxel SupervoxelSegmenter::aggregate(uint64_t group) const {
-  Stats total;
+  VoxelSetStats total;
   for (uint64_t s : groups_.at(group)) total.add(seeds_.at(s).stats);
-  Supervoxel sv;
-  sv.key = group;
-  sv.surface = surface_of_key(group);
-  sv.voxel_count = static_cast<int>(total.count);
-  if (total.count == 0) return sv;
-  const double n = static_cast<double>(total.count);
-  sv.center = Eigen::Vector3d(total.mean_um[0] / n, total.mean_um[1] / n, total.mean_um[2] / n) * 1e-6;
-  const Eigen::Vector3d normal(static_cast<double>(total.normal_u[0]), static_cast<double>(total.normal_u[1]),
-                               static_cast<double>(total.normal_u[2]));
-  sv.normal = normal.norm() > 0.0 ? Eigen::Vector3d(normal.normalized()) : Eigen::Vector3d::UnitZ();
-  sv.covered = total.covered == total.count || !has_ise_patch(group);
-  sv.covered_voxels = static_cast<int>(total.covered);
-  if (!sv.covered) {
-    int best = 0;  // kNone: incomplete voxels that gave no reason (from an old peer)
-    for (int g = 1; g < core::kCoverageGapCount; ++g)
-      if (total.gaps[g] > total.gaps[best]) best = g;
-    sv.gap = core::CoverageGap(best);
-  }
-  uint32_t mask = 0;
-  for (size_t k = 0; k < total.low_risk.size() && k < 32; ++k) {
-    if (total.low_risk[k] == total.count) mask |= 1u << k;
-  }
-  sv.traversal_requirement = traversal_requirement(mask, levels_);
-  return sv;
+  // The patch search walks the voxels; a fully covered group needs none.
+  const bool open_patch = total.count > 0 && total.covered != total.count && has_ise_patch(group);
+  return supervoxel_from(group, total, open_patch, levels_);
 }
 
 bool SupervoxelSegmenter::has_ise_patch(uint64_t group) const {
@@ -445,7 +398,7 @@ SegmentationChange SupervoxelSegmenter::update(std::span<const VoxelSample> voxe
       VoxelRec& rec = *found;
       if (rec.cls == class_bits(v)) {  // same class: attributes only
         if (rec.label != 0) {
-          Stats& st = seeds_.at(rec.label).stats;
+          VoxelSetStats& st = seeds_.at(rec.label).stats;
           st.add(rec.sample, -1, levels_.size());
           st.add(v, +1, levels_.size());
           touched_seeds_.insert(rec.label);

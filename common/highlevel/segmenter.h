@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/highlevel/supervoxel.h"
+#include "common/highlevel/supervoxel_stats.h"
 #include "common/highlevel/voxel_index.h"
 #include "common/highlevel/voxel_sample.h"
 
@@ -71,17 +72,6 @@ class SupervoxelSegmenter {
   const SegmenterParams& params() const { return params_; }
 
  private:
-  // Exact, order-independent attribute sums of a voxel set.
-  struct Stats {
-    int64_t count = 0;
-    int64_t covered = 0;
-    int64_t mean_um[3] = {0, 0, 0};    // sum of Gaussian means, micrometres
-    int64_t normal_u[3] = {0, 0, 0};   // sum of normals, 1e-6 units
-    std::vector<int64_t> low_risk;     // per species: voxels low-risk for it
-    int64_t gaps[core::kCoverageGapCount] = {};  // voxels per coverage gap
-    void add(const VoxelSample& v, int sign, size_t species);
-    void add(const Stats& s);
-  };
   struct VoxelRec {
     VoxelSample sample;
     uint64_t seed_cell = 0;  // class-tagged key of the eta_s cell holding the voxel
@@ -98,7 +88,7 @@ class SupervoxelSegmenter {
     int64_t key_sum[3] = {0, 0, 0};            // for the centroid of the cell's voxels
     uint64_t seed_voxel = 0;                   // voxel nearest the centroid: wavefront source
     std::unordered_set<uint64_t> region;       // voxels labelled with this seed
-    Stats stats;                               // over `region`
+    VoxelSetStats stats;                       // over `region`
   };
 
   uint64_t voxel_key(const core::GridCell& c) const { return core::seed_key(c); }
