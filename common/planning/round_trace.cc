@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/core/coverage_gap.h"
 #include "common/highlevel/high_level_map.h"
 
 namespace hexplore::planning {
@@ -52,7 +53,18 @@ std::string round_trace_json(const RoundTrace& round, const PlanRequest& req, co
     << ", \"observing_s\": " << f.observing_s << ", \"targets_judged\": " << f.targets_judged
     << ", \"targets_complete_when_judged\": " << f.targets_complete_when_judged << ", \"next\": [";
   for (size_t i = 0; i < round.follower_next.size(); ++i) j << (i ? ", " : "") << vec(round.follower_next[i]);
-  j << "]}}\n";
+  j << "]}, \"judged\": [";
+  for (size_t i = 0; i < round.judged.size(); ++i) {
+    const TargetJudgement& t = round.judged[i];
+    char b[200];
+    std::snprintf(b, sizeof(b),
+                  "{\"target\": %llu, \"complete\": %d, \"voxels\": %d, \"covered\": %d, \"gap\": \"%s\", "
+                  "\"distance_m\": %.2f, \"incidence_deg\": %.1f, \"elevation_deg\": %.1f}",
+                  static_cast<unsigned long long>(t.target), t.complete ? 1 : 0, t.voxels, t.covered_voxels,
+                  std::string(core::to_string(core::CoverageGap(t.gap))).c_str(), t.distance_m, t.incidence_deg, t.elevation_deg);
+    j << (i ? ", " : "") << b;
+  }
+  j << "]}\n";
   return j.str();
 }
 

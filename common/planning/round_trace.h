@@ -28,6 +28,7 @@ struct RoundTrace {
   size_t given_up = 0;              // targets the team gave up on
   uint64_t passing_observations = 0;
   std::vector<Eigen::Vector3d> follower_next;  // the follower's next views after it merged the round's route
+  std::vector<TargetJudgement> judged;         // targets the follower judged since the last round
 };
 
 // The JSON line (with its newline) for one round of `req` / `res` on `map`; supervoxels are

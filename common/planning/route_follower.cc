@@ -347,6 +347,22 @@ void RouteFollower::track_progress(double now_s, const Eigen::Vector3d& position
   blocked_seen_ = blocked_seen_ || state == DriveState::kBlocked;
 }
 
+TargetJudgement RouteFollower::judgement(const highlevel::Supervoxel& sv, const Eigen::Vector3d& spot) {
+  TargetJudgement j;
+  j.target = sv.key;
+  j.complete = sv.covered;
+  j.voxels = sv.voxel_count;
+  j.covered_voxels = sv.covered_voxels;
+  j.gap = int(sv.gap);
+  const Eigen::Vector3d to_spot = spot - sv.center;
+  j.distance_m = to_spot.norm();
+  if (j.distance_m > 1e-9) {
+    j.incidence_deg = std::acos(std::clamp(sv.normal.dot(to_spot / j.distance_m), -1.0, 1.0)) * 180.0 / M_PI;
+    j.elevation_deg = std::asin(std::clamp(-to_spot.z() / j.distance_m, -1.0, 1.0)) * 180.0 / M_PI;
+  }
+  return j;
+}
+
 void RouteFollower::judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger) {
   auto due = [&](const PendingCheck& c) { return c.due_s <= now_s; };
   for (const PendingCheck& c : pending_) {
@@ -357,6 +373,7 @@ void RouteFollower::judge(double now_s, const highlevel::HighLevelMap& map, Give
       ++counters_.targets_judged;
       if (!sv->covered) ledger.observed(t, c.spot, sv->voxel_count);
       else ++counters_.targets_complete_when_judged;
+      if (options_.record_judgements) judgements_.push_back(judgement(*sv, c.spot));
     }
   }
   pending_.erase(std::remove_if(pending_.begin(), pending_.end(), due), pending_.end());

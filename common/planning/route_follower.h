@@ -18,6 +18,7 @@
 #include <optional>
 #include <span>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -43,6 +44,7 @@ struct FollowerOptions {
   // (or the spot being observed) within this distance of it (straight and along the path), and that the new route still
   // has, come next in their old order. 0: only the leg is kept.
   double keep_stretch_m = 5.0;
+  bool record_judgements = false;   // keep a TargetJudgement per judged target (for the trace)
   // The leg being driven gives way to a new route's first view that is this much nearer by path.
   double switch_gain_m = 3.0;
 };
@@ -73,6 +75,19 @@ struct FollowerCounters {
   // (what a dwell achieves in a mission; bench_view_efficacy measures it off-line).
   int targets_judged = 0;
   int targets_complete_when_judged = 0;
+};
+
+// One target judged a settle time after it was observed: what the map said of it then, and
+// how the spot it was observed from stood to it (the trace's "judged" list; why dwells fail).
+struct TargetJudgement {
+  uint64_t target = 0;
+  bool complete = false;
+  int voxels = 0;
+  int covered_voxels = 0;
+  int gap = 0;                 // core::CoverageGap of most incomplete voxels
+  double distance_m = 0.0;     // spot to target centre
+  double incidence_deg = 0.0;  // between the target normal and the direction back to the spot
+  double elevation_deg = 0.0;  // of the target centre seen from the spot (sensor height not added)
 };
 
 class RouteFollower {
@@ -106,6 +121,8 @@ class RouteFollower {
     return std::span<const TaskView>(route_).subspan(std::min(route_.size(), next_));
   }
   const FollowerCounters& counters() const { return counters_; }
+  // The judgements since the last call (the trace writes them once per round).
+  std::vector<TargetJudgement> take_judgements() { return std::exchange(judgements_, {}); }
 
  private:
   struct PendingCheck {  // targets observed from `spot`, judged at `due_s`
@@ -124,6 +141,7 @@ class RouteFollower {
   void fail_targets(const TaskView& view, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void skip_current(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void track_progress(double now_s, const Eigen::Vector3d& position, DriveState state);
+  static TargetJudgement judgement(const highlevel::Supervoxel& sv, const Eigen::Vector3d& spot);
   void judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch);
   bool reached(const TaskView& view, const Eigen::Vector3d& position) const;  // reach_m / observe_reach_m
@@ -161,6 +179,7 @@ class RouteFollower {
   std::vector<Eigen::Vector3d> path_points_;
 
   FollowerCounters counters_;
+  std::vector<TargetJudgement> judgements_;
 };
 
 }  // namespace hexplore::planning

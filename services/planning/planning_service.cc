@@ -94,6 +94,7 @@ void PlanningService::setup(service::ServiceContext& context) {
   follow.settle_s = parse_positive(args, "settle-s", follow.settle_s);
   follow.keep_stretch_m = parse_positive(args, "keep-stretch-m", follow.keep_stretch_m);
   follow.switch_gain_m = parse_positive(args, "switch-gain-m", follow.switch_gain_m);
+  follow.record_judgements = trace_.is_open();
   // The cost model charges 1 / observation speed per facade view; execution spends it.
   follow.observation_time_s = species->observation_speed_views_per_s > 0 ? 1.0 / species->observation_speed_views_per_s : 0.0;
   if (auto it = args.find("observe"); it != args.end()) {
@@ -453,6 +454,7 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
   round.passing_observations = uint64_t(passing_->observations());
   const auto ahead = follower_->views_ahead();
   for (const auto& v : ahead.first(std::min<size_t>(3, ahead.size()))) round.follower_next.push_back(v.position);
+  round.judged = follower_->take_judgements();
   trace_ << planning::round_trace_json(round, req, res, follower_->counters(), *map_, options_.region);
   trace_.flush();
 }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/core/coverage_gap.h"
 #include "common/highlevel/high_level_map.h"
 
 namespace hexplore::planning {
@@ -28,6 +29,15 @@ TEST(RoundTrace, OneLineWithTheRouteTheReferenceAndWhereTheFollowerHeads) {
   round.t_s = 12.5;
   round.reason = "route timed out";
   round.follower_next = {{3.0, 4.0, 0.0}, {5.0, 6.0, 0.0}};
+  TargetJudgement judged;
+  judged.target = 77;
+  judged.voxels = 12;
+  judged.covered_voxels = 9;
+  judged.gap = int(core::CoverageGap::kAngle);
+  judged.distance_m = 6.5;
+  judged.incidence_deg = 51.2;
+  judged.elevation_deg = 20.0;
+  round.judged = {judged};
   const std::string line = round_trace_json(round, req, res, f, map, Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-10),
                                                                                        Eigen::Vector3d::Constant(10)));
   ASSERT_FALSE(line.empty());
@@ -37,7 +47,10 @@ TEST(RoundTrace, OneLineWithTheRouteTheReferenceAndWhereTheFollowerHeads) {
   EXPECT_NE(line.find("\"reference\": \"mr1000a\""), std::string::npos);
   EXPECT_NE(line.find("\"route\": [{\"p\": [1.00, 2.00, 0.00], \"facade\": 1, \"targets\": 2}]"), std::string::npos);
   EXPECT_NE(line.find("\"legs_kept\": 4, \"legs_switched\": 0, \"stretch_views_kept\": 3"), std::string::npos);
-  EXPECT_NE(line.find("\"next\": [[3.00, 4.00, 0.00], [5.00, 6.00, 0.00]]}}"), std::string::npos) << line;
+  EXPECT_NE(line.find("\"next\": [[3.00, 4.00, 0.00], [5.00, 6.00, 0.00]]}"), std::string::npos) << line;
+  EXPECT_NE(line.find("\"judged\": [{\"target\": 77, \"complete\": 0, \"voxels\": 12, \"covered\": 9, \"gap\": \"angle\", "
+                      "\"distance_m\": 6.50, \"incidence_deg\": 51.2, \"elevation_deg\": 20.0}]}"),
+            std::string::npos) << line;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 
 #include "common/core/team_config.h"
@@ -184,6 +185,31 @@ TEST(RouteFollower, CoverageIsJudgedASettleTimeAfterTheObservation) {
   set_covered(e.map, kWall);
   g.step(3.2, facade.position, DriveState::kIdle, e.map, e.keep_off, e.ledger);
   EXPECT_EQ(e.ledger.attempts(kWall), 0);
+}
+
+TEST(RouteFollower, AJudgementSaysHowTheSpotStoodToTheTarget) {
+  Drive d;
+  d.options.observation_time_s = 1.0;
+  d.options.record_judgements = true;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  f.set_route({facade}, {1.5, 1.5, 0}, d.map);
+  f.step(0.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  f.step(1.1, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  f.step(3.2, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  const auto judged = f.take_judgements();
+  ASSERT_EQ(judged.size(), 1u);
+  const TargetJudgement& j = judged.front();
+  EXPECT_EQ(j.target, kWall);
+  EXPECT_FALSE(j.complete);
+  EXPECT_EQ(j.voxels, 40);
+  EXPECT_EQ(j.gap, int(core::CoverageGap::kDensity));
+  const Eigen::Vector3d to_spot = facade.position - d.map.find(kWall)->center;
+  EXPECT_NEAR(j.distance_m, to_spot.norm(), 1e-9);
+  const double expected_incidence = std::acos(Eigen::Vector3d(0, -1, 0).dot(to_spot.normalized())) * 180.0 / M_PI;
+  EXPECT_NEAR(j.incidence_deg, expected_incidence, 1e-6);
+  EXPECT_GT(j.elevation_deg, 0.0);  // the wall's centre is above the spot
+  EXPECT_TRUE(f.take_judgements().empty());  // taken once
 }
 
 TEST(RouteFollower, BlockedOnTheWaySkipsTheViewBacksOffAndCountsAnAttempt) {
