@@ -63,6 +63,7 @@ RoundInputs prepare_round(const PlanRequest& req, const TeamCapabilities& view_t
   in.reachable =
       reachable_ground(req.map->graph(), req.robots, view_team, stand_region(o.region, view_team.max_observation_range()));
   in.context = std::make_unique<MapContext>(*req.map, o, union_of(in.reachable), req.given_up);
+  in.context->reachable_by_species = in.reachable;
   in.views = generate_task_views(*in.context, view_team, o, &in.stats, record_targets ? &in.targets : nullptr);
   return in;
 }

@@ -21,9 +21,27 @@ const char* to_string(TargetOutcome o) {
   return "unknown";
 }
 
+namespace {
+
+// Whether a robot of some species can stand on `ground` and observe from there a target
+// `distance_m` away (ground centre to target, as observation_requirement measures it).
+bool some_species_can_take(const MapContext& ctx, const TeamCapabilities& team, const highlevel::Supervoxel& ground,
+                           double distance_m) {
+  for (size_t k = 0; k < team.species.size(); ++k) {
+    const SpeciesCapability& s = team.species[k];
+    if (distance_m >= s.observation_range_m || ground.traversal_requirement > s.traversal_level) continue;
+    if (k < ctx.reachable_by_species.size() && !ctx.reachable_by_species[k].count(ground.key)) continue;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target,
                       const std::vector<const highlevel::Supervoxel*>& candidates, double range,
-                      const PlannerOptions& o, TaskView& view, int64_t* rays, bool* sighted) {
+                      const PlannerOptions& o, TaskView& view, int64_t* rays, bool* sighted,
+                      const TeamCapabilities* team) {
   struct Scored {
     double score;
     const highlevel::Supervoxel* ground;
@@ -56,6 +74,8 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
     return a.score != b.score ? a.score > b.score : a.ground->key < b.ground->key;
   });
   for (const auto& s : ok) {
+    if (team != nullptr && !some_species_can_take(ctx, *team, *s.ground, (s.ground->center - target.center).norm()))
+      continue;
     if (rays) ++*rays;
     const Eigen::Vector3d sensor = s.ground->center + s.ground->normal.normalized() * o.sensor_height_m;
     if (!ctx.occlusion.clear(sensor, target.center)) continue;
@@ -109,7 +129,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     bool found = false, sighted = false;
     for (double r = 4.0;; r = std::min(range, 2.0 * r)) {
       found = best_facade_view(ctx, sv, ctx.ground.within(sv.center, r, /*sorted=*/false), std::min(r, range), o, view,
-                               &st.rays_cast, &sighted);
+                               &st.rays_cast, &sighted, &team);
       if (r >= range) break;
       const double beyond = r - o.sensor_height_m;
       if (found && beyond > 0 && view.score >= 1.0 / (o.beta_l * beyond)) break;

@@ -74,6 +74,9 @@ struct MapContext {
   OcclusionGrid occlusion;
   GroundIndex ground;
   const GiveUpLedger* given_up = nullptr;
+  // Per species index: the ground its robots can drive to (optional; RoundInputs::reachable).
+  // With it, a view is chosen only where a species whose range suffices can stand.
+  std::vector<std::unordered_set<uint64_t>> reachable_by_species;
   MapContext(const highlevel::HighLevelMap& m, const PlannerOptions& o,
              std::optional<std::unordered_set<uint64_t>> reachable_ground = std::nullopt,
              const GiveUpLedger* given_up_targets = nullptr)
@@ -95,10 +98,14 @@ struct MapContext {
 // Best visible view of one facade target from the given candidates; false when none sees it.
 // `range` limits the view distance (the largest observation range, or one species' range).
 // `sighted` (optional) is set when some candidate passed range and angles (so a false result
-// means every line of sight was blocked).
+// means every line of sight was blocked). With `team`, a candidate no species can take is
+// passed over for the next best one: no species both reaches that far (range) and can stand
+// there (traversal level, and ctx.reachable_by_species when set) -- e.g. a view only the
+// long-range species could take, on ground only the other species can drive to.
 bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target,
                       const std::vector<const highlevel::Supervoxel*>& candidates, double range,
-                      const PlannerOptions& o, TaskView& view, int64_t* rays = nullptr, bool* sighted = nullptr);
+                      const PlannerOptions& o, TaskView& view, int64_t* rays = nullptr, bool* sighted = nullptr,
+                      const TeamCapabilities* team = nullptr);
 
 // All task views of the map, in ascending key order; unassignable views are dropped.
 // `targets` (optional) receives what became of every ISE supervoxel inside the region.

@@ -12,6 +12,7 @@
 #include "common/planning/labels.h"
 #include "common/planning/planner_registry.h"
 #include "common/planning/rng.h"
+#include "common/planning/round_inputs.h"
 #include "common/planning/synthetic_scene.h"
 
 namespace hexplore::planning {
@@ -213,8 +214,8 @@ TEST(Planner, EveryClusterGoesToExactlyOneMatchingReachableRobot) {
     auto planner = f.planner(name);
     const PlanResult res = planner->plan(f.request(0));
     const TeamCapabilities caps = name == "no-hetero" ? f.caps.homogeneous() : f.caps;
-    const MapContext ctx(f.map, f.options);
-    const auto views = generate_task_views(ctx, caps, f.options);
+    const RoundInputs in = prepare_round(f.request(0), caps, f.options);  // the planner's own views
+    const auto& views = in.views;
     const auto clusters = cluster_views(views, f.options.eta_r_m);
     std::map<uint64_t, const TaskCluster*> by_id;
     for (const auto& c : clusters) by_id[c.id] = &c;
