@@ -14,60 +14,18 @@
 #include "common/planning/rng.h"
 #include "common/planning/round_inputs.h"
 #include "common/planning/synthetic_scene.h"
+#include "tests/planning/planner_fixture.h"
 
 namespace hexplore::planning {
 namespace {
 
-core::TeamConfig two_species_team() {
-  core::TeamConfig team;
-  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
-  team.robots = {{"slug1", "SLUGCAT", {1.5, 1.5, 0}, 0},
-                 {"slug2", "SLUGCAT", {28.5, 18.5, 0}, 0},
-                 {"mr1", "MR1000", {1.5, 18.5, 0}, 0},
-                 {"mr2", "MR1000", {20.5, 1.5, 0}, 0}};
-  return team;
-}
-
-// 30 x 20 m with one building and a rubble band that cuts off the east end (x >= 26) for
-// the wheeled species.
-SyntheticSceneOptions small_scene() {
-  SyntheticSceneOptions o;
-  o.width_cells = 30;
-  o.depth_cells = 20;
-  o.buildings = {{5, 5, 14, 13, 5}};
-  o.rubble = {Eigen::Vector4i(24, 0, 25, 19)};
-  o.covered_fraction = 0.3;
-  return o;
-}
-
-struct Fixture {
-  core::TeamConfig team = two_species_team();
-  TeamCapabilities caps = capabilities_from(team);
-  PlannerOptions options;
-  highlevel::HighLevelMap map{highlevel::species_levels(team)};
-  Fixture() {
-    options = PlannerOptions::from(team.params);
-    options.ga_time_budget_s = 0.0;  // generation budget only: deterministic
-    options.ga_max_generations = 150;
-    map.apply(synthetic_scene(small_scene()));
-  }
-  PlanRequest request(int self) const {
-    PlanRequest r;
-    r.map = &map;
-    for (const auto& rc : team.robots) r.robots.push_back({rc.id, *team.species_index(rc.species), rc.start_position_m});
-    r.self = self;
-    return r;
-  }
-  std::unique_ptr<Planner> planner(const std::string& name) const {
-    auto p = PlannerRegistry::builtin().create(name);
-    p->configure({caps, options});
-    p->activate();
-    return p;
-  }
-};
+// The four-robot team on the 30 x 20 m rubble-band scene (planner_fixture.h).
+using Fixture = testing::PlannerFixture;
+using testing::four_robot_team;
+using testing::rubble_band_scene;
 
 TEST(Labels, MatchingReadsRequirementAtMostCapability) {
-  const core::TeamConfig team = two_species_team();
+  const core::TeamConfig team = four_robot_team();
   const TeamCapabilities caps = capabilities_from(team);
   // SLUGCAT: traversal 2, observation level 1 (10 m); MR1000: traversal 1, observation 2 (27 m).
   ASSERT_EQ(caps.species[0].traversal_level, 2);
@@ -263,7 +221,7 @@ TEST(Planner, SameInputSameRoutesOnEveryRobot) {
   Fixture f;
   // Two robots plan independently (separate planner instances, maps fed in different order).
   highlevel::HighLevelMap other(highlevel::species_levels(f.team));
-  auto up = synthetic_scene(small_scene());
+  auto up = synthetic_scene(rubble_band_scene());
   std::reverse(up.upserts.begin(), up.upserts.end());
   std::reverse(up.edge_upserts.begin(), up.edge_upserts.end());
   other.apply(up);
