@@ -6,9 +6,6 @@
 #include "common/planning/visibility.h"
 
 namespace hexplore::planning {
-namespace {
-constexpr double kDegToRad = M_PI / 180.0;
-}
 
 PassingObserver::PassingObserver(PassingOptions passing, PlannerOptions planner)
     : passing_(passing), planner_(std::move(planner)) {}

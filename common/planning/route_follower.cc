@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "common/planning/executable_path.h"
+#include "common/planning/visibility.h"
 
 namespace hexplore::planning {
 namespace {
@@ -354,12 +355,10 @@ TargetJudgement RouteFollower::judgement(const highlevel::Supervoxel& sv, const 
   j.voxels = sv.voxel_count;
   j.covered_voxels = sv.covered_voxels;
   j.gap = int(sv.gap);
-  const Eigen::Vector3d to_spot = spot - sv.center;
-  j.distance_m = to_spot.norm();
-  if (j.distance_m > 1e-9) {
-    j.incidence_deg = std::acos(std::clamp(sv.normal.dot(to_spot / j.distance_m), -1.0, 1.0)) * 180.0 / M_PI;
-    j.elevation_deg = std::asin(std::clamp(-to_spot.z() / j.distance_m, -1.0, 1.0)) * 180.0 / M_PI;
-  }
+  const ViewGeometry g = view_geometry(spot, Eigen::Vector3d::UnitZ(), sv.center, sv.normal);
+  j.distance_m = g.distance_m;
+  j.incidence_deg = g.incidence_rad * kRadToDeg;
+  j.elevation_deg = g.elevation_rad * kRadToDeg;
   return j;
 }
 

@@ -27,9 +27,10 @@ namespace {
 // `distance_m` away (ground centre to target, as observation_requirement measures it).
 bool some_species_can_take(const MapContext& ctx, const TeamCapabilities& team, const highlevel::Supervoxel& ground,
                            double distance_m) {
+  const int observation = observation_requirement(distance_m, team);
+  if (observation == 0) return false;  // beyond every species' range
   for (size_t k = 0; k < team.species.size(); ++k) {
-    const SpeciesCapability& s = team.species[k];
-    if (distance_m >= s.observation_range_m || ground.traversal_requirement > s.traversal_level) continue;
+    if (!matches(observation, ground.traversal_requirement, team.species[k])) continue;
     if (k < ctx.reachable_by_species.size() && !ctx.reachable_by_species[k].count(ground.key)) continue;
     return true;
   }

@@ -4,9 +4,6 @@
 #include <cmath>
 
 namespace hexplore::planning {
-namespace {
-constexpr double kDegToRad = M_PI / 180.0;
-}
 
 OcclusionGrid::OcclusionGrid(const highlevel::HighLevelMap& map, double cell_m) : cell_m_(cell_m) {
   for (const auto& [key, sv] : map.supervoxels())

@@ -17,6 +17,7 @@
 
 namespace hexplore::planning {
 
+inline constexpr double kDegToRad = M_PI / 180.0;
 inline constexpr double kRadToDeg = 180.0 / M_PI;
 
 class OcclusionGrid {
