@@ -8,9 +8,7 @@ namespace hexplore::planning {
 bool GiveUpLedger::observed(uint64_t key, const Eigen::Vector3d& spot, int voxels) {
   Record& r = records_[key];
   ++r.attempts;
-  const double d2 = rules_.distinct_m * rules_.distinct_m;
-  if (std::none_of(r.spots.begin(), r.spots.end(), [&](const Eigen::Vector3d& s) { return (s - spot).squaredNorm() < d2; }))
-    r.spots.push_back(spot);
+  if (!near_a_spot(r, spot)) r.spots.push_back(spot);
   return decide(key, r, voxels);
 }
 
@@ -37,6 +35,21 @@ bool GiveUpLedger::given_up(uint64_t key, int current_voxels) const {
   const auto it = given_up_.find(key);
   if (it == given_up_.end()) return false;
   return current_voxels <= std::ceil(rules_.regrowth_ratio * std::max(1, it->second));
+}
+
+bool GiveUpLedger::tried_from(uint64_t key, const Eigen::Vector3d& spot) const {
+  const auto it = records_.find(key);
+  return it != records_.end() && near_a_spot(it->second, spot);
+}
+
+bool GiveUpLedger::near_a_spot(const Record& r, const Eigen::Vector3d& spot) const {
+  const double d2 = rules_.distinct_m * rules_.distinct_m;
+  return std::any_of(r.spots.begin(), r.spots.end(), [&](const Eigen::Vector3d& s) { return (s - spot).squaredNorm() < d2; });
+}
+
+bool GiveUpLedger::tried(uint64_t key) const {
+  const auto it = records_.find(key);
+  return it != records_.end() && !it->second.spots.empty();
 }
 
 int GiveUpLedger::attempts(uint64_t key) const {

@@ -102,6 +102,7 @@ std::vector<TaskView> mnss_tour(const MapContext& ctx, const std::vector<TaskVie
   for (size_t c = 0; c < candidates.size(); ++c) {
     const auto* g = candidates[c];
     for (size_t t = 0; t < T; ++t) {
+      if (ctx.tried_from(targets[t]->key, g->center)) continue;
       const double score = ground_view_score(*g, *targets[t], species.observation_range_m, ctx.occlusion, o, st.rays);
       if (score <= 0.0) continue;
       sees[c].push_back({int(t), score});

@@ -193,7 +193,9 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
     ++counters_.views_reached;
     bool facade_open = false;
     for (uint64_t t : v.targets) {
-      if (!open_target(t, map, ledger)) continue;
+      // Observed from here a moment ago and not judged yet: a second look from the same spot
+      // would only delay the verdict (the next view of it stands elsewhere if it fails).
+      if (!open_target(t, map, ledger) || awaiting_judgement(t, position, ledger.rules().distinct_m)) continue;
       observed_targets_.push_back(t);
       const highlevel::Supervoxel* sv = map.find(t);
       if (v.facade && sv->facade()) {
@@ -360,6 +362,13 @@ TargetJudgement RouteFollower::judgement(const highlevel::Supervoxel& sv, const 
   j.incidence_deg = g.incidence_rad * kRadToDeg;
   j.elevation_deg = g.elevation_rad * kRadToDeg;
   return j;
+}
+
+bool RouteFollower::awaiting_judgement(uint64_t target, const Eigen::Vector3d& position, double distinct_m) const {
+  return std::any_of(pending_.begin(), pending_.end(), [&](const PendingCheck& c) {
+    return (c.spot - position).squaredNorm() < distinct_m * distinct_m &&
+           std::find(c.targets.begin(), c.targets.end(), target) != c.targets.end();
+  });
 }
 
 void RouteFollower::judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger) {

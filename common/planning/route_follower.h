@@ -137,6 +137,8 @@ class RouteFollower {
                                              const highlevel::HighLevelMap& map, const GiveUpLedger& ledger);
   std::optional<MotionOrder> aim(size_t target_index, const Eigen::Vector3d& position);
   void finish_observing(double now_s, const Eigen::Vector3d& position);
+  // Whether `target` was observed from within `distinct_m` of `position` and is not judged yet.
+  bool awaiting_judgement(uint64_t target, const Eigen::Vector3d& position, double distinct_m) const;
   // A try at the view that did not observe it, for each of its incomplete targets.
   void fail_targets(const TaskView& view, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void skip_current(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);

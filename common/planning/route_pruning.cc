@@ -35,7 +35,7 @@ std::vector<TaskView> prune_route(const MapContext& ctx, std::vector<TaskView> r
     const highlevel::Supervoxel* ground = ctx.map.find(route[v].ground_key);
     if (ground != nullptr)
       for (size_t t = 0; t < T; ++t)
-        if (!mark[t])
+        if (!mark[t] && !ctx.tried_from(targets[t]->key, ground->center))
           mark[t] = ground_view_score(*ground, *targets[t], species.observation_range_m, ctx.occlusion, o, st.rays) > 0.0;
     for (size_t t = 0; t < T; ++t)
       if (mark[t]) {

@@ -56,6 +56,7 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
   const double tn = target.normal.norm();
   const Eigen::Vector3d target_n = tn > 1e-9 ? Eigen::Vector3d(target.normal / tn) : Eigen::Vector3d::UnitZ();
   for (const auto* g : candidates) {
+    if (ctx.tried_from(target.key, g->center)) continue;
     const Eigen::Vector3d gn = g->normal.normalized();
     const Eigen::Vector3d m = target.center - (g->center + gn * o.sensor_height_m);
     const double d2 = m.squaredNorm();
@@ -137,7 +138,9 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     }
     if (!found) {
       ++st.unobservable_facades;
-      record(key, sighted ? TargetOutcome::kOccluded : TargetOutcome::kNoViewpoint);
+      // Observed already, and no other spot sees it: as good as given up.
+      const bool tried = ctx.given_up && ctx.given_up->tried(key);
+      record(key, tried ? TargetOutcome::kGivenUp : sighted ? TargetOutcome::kOccluded : TargetOutcome::kNoViewpoint);
       continue;
     }
     view.observation_requirement = observation_requirement((view.position - sv.center).norm(), team);
@@ -149,6 +152,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     }
     for (const auto* g : ctx.ground.within(view.position, o.ground_cover_radius_m)) {
       if (g->covered || covered_ground.count(g->key) || ctx.is_ignored(g->key) || !o.region.contains(g->center)) continue;
+      if (ctx.tried_from(g->key, view.position)) continue;
       view.targets.push_back(g->key);
       covered_ground.insert(g->key);
       ++st.composite_ground;
@@ -162,6 +166,11 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     if (!ctx.is_reachable(key)) {
       ++st.unreachable_ground;
       record(key, TargetOutcome::kUnreachable);
+      continue;
+    }
+    if (ctx.tried_from(key, sv.center)) {  // stood on and still incomplete: as good as given up
+      ++st.ignored;
+      record(key, TargetOutcome::kGivenUp);
       continue;
     }
     TaskView view;

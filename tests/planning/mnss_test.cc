@@ -7,6 +7,7 @@
 #include "common/core/team_config.h"
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/mtsp_problem.h"
+#include "common/planning/route_pruning.h"
 #include "common/planning/synthetic_scene.h"
 
 namespace hexplore::planning {
@@ -73,6 +74,54 @@ TEST(Mnss, CoversEveryTargetWithFewerViews) {
     for (size_t i = 0; i < tour.size(); ++i) EXPECT_EQ(repeat[i].key, tour[i].key);
   }
   EXPECT_LT(total_after, total_before);
+}
+
+// Once a target stayed incomplete when observed from a spot, neither MNSS nor the route's
+// pruning hands it to a view standing there again (GiveUpLedger::tried_from).
+TEST(Mnss, NoViewStandsWhereItsTargetWasObservedInVain) {
+  core::TeamConfig team;
+  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
+  const TeamCapabilities caps = capabilities_from(team);
+  PlannerOptions o = PlannerOptions::from(team.params);
+  SyntheticSceneOptions scene;
+  scene.width_cells = 30;
+  scene.depth_cells = 20;
+  scene.buildings = {{5, 5, 14, 13, 5}};
+  scene.rubble = {};
+  highlevel::HighLevelMap map(highlevel::species_levels(team));
+  map.apply(synthetic_scene(scene));
+  GiveUpLedger ledger;
+  auto tours = [&] {
+    const MapContext ctx(map, o, std::nullopt, &ledger);
+    const auto views = generate_task_views(ctx, caps, o);
+    std::vector<TaskView> route;
+    for (const auto& cl : cluster_views(views, o.eta_r_m)) {
+      if (cl.label != kPublic) continue;
+      Rng rng(3);
+      const auto tour = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, caps.species[0],
+                                  cl.center + Eigen::Vector3d(-8, 0, 0), std::nullopt, o, rng);
+      route.insert(route.end(), tour.begin(), tour.end());
+    }
+    return prune_route(ctx, route, caps.species[0], o);
+  };
+  const auto first = tours();
+  ASSERT_FALSE(first.empty());
+  int tried = 0;
+  for (const auto& v : first)
+    for (uint64_t t : v.targets)
+      if (map.find(t)->facade()) {
+        ledger.observed(t, v.position, map.find(t)->voxel_count);
+        ++tried;
+      }
+  ASSERT_GT(tried, 0);
+  const auto second = tours();
+  int handed = 0;
+  for (const auto& v : second)
+    for (uint64_t t : v.targets) {
+      EXPECT_FALSE(ledger.tried_from(t, v.position)) << "target " << t << " again from " << v.position.transpose();
+      handed += ledger.tried(t) ? 1 : 0;
+    }
+  EXPECT_GT(handed, 0) << "tried targets get views elsewhere";
 }
 
 }  // namespace

@@ -101,6 +101,51 @@ TEST(TaskViews, WallsOccludeTheirBackSide) {
   EXPECT_EQ(views[0].ground_key, near_west);  // the east one behind the target
 }
 
+// A target that stayed incomplete when observed from its best view gets its next view from
+// another spot; with no other spot that sees it, it has no view and counts as given up.
+TEST(TaskViews, ATargetObservedInVainFromASpotIsNextViewedFromAnother) {
+  highlevel::MapUpdate up;
+  up.full_snapshot = true;
+  auto add = [&](Eigen::Vector3d c, highlevel::SurfaceClass s, Eigen::Vector3d n) {
+    highlevel::Supervoxel sv;
+    sv.center = c;
+    sv.normal = n;
+    sv.surface = s;
+    sv.covered = s == highlevel::SurfaceClass::kGround;
+    sv.traversal_requirement = sv.covered ? 1 : 0;
+    sv.key = highlevel::supervoxel_key(core::cell_of(c, 1.0), s);
+    up.upserts.push_back(sv);
+    return sv;
+  };
+  const auto far = add({1.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
+  const auto near = add({4.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
+  const auto target = add({7.5, 0.5, 1.5}, highlevel::SurfaceClass::kFacade, -Eigen::Vector3d::UnitX());
+  highlevel::HighLevelMap map({2, 1});
+  map.apply(up);
+  Fixture f;
+  GiveUpLedger ledger;
+  const MapContext fresh(map, f.options, std::nullopt, &ledger);
+  auto views = generate_task_views(fresh, f.caps, f.options);
+  ASSERT_EQ(views.size(), 1u);
+  ASSERT_EQ(views[0].ground_key, far.key);  // the lower incidence scores best (Vis, degrees)
+
+  ledger.observed(target.key, far.center + Eigen::Vector3d(0, 0, 0.4), target.voxel_count);
+  const MapContext once(map, f.options, std::nullopt, &ledger);
+  views = generate_task_views(once, f.caps, f.options);
+  ASSERT_EQ(views.size(), 1u);
+  EXPECT_EQ(views[0].ground_key, near.key);
+
+  // Without the near ground, no untried spot sees it.
+  highlevel::HighLevelMap far_only({2, 1});
+  up.upserts.erase(up.upserts.begin() + 1);
+  far_only.apply(up);
+  const MapContext alone(far_only, f.options, std::nullopt, &ledger);
+  std::vector<TargetRecord> outcomes;
+  EXPECT_TRUE(generate_task_views(alone, f.caps, f.options, nullptr, &outcomes).empty());
+  ASSERT_EQ(outcomes.size(), 1u);
+  EXPECT_EQ(outcomes[0].outcome, TargetOutcome::kGivenUp);
+}
+
 // Facade normals face the side their sensors saw (one facing per supervoxel): a view behind
 // the surface would see its back, so it is no view.
 TEST(TaskViews, AViewStandsInFrontOfTheSurface) {

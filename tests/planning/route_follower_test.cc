@@ -187,6 +187,29 @@ TEST(RouteFollower, CoverageIsJudgedASettleTimeAfterTheObservation) {
   EXPECT_EQ(e.ledger.attempts(kWall), 0);
 }
 
+TEST(RouteFollower, AViewOfTargetsJustObservedFromHereIsNotObservedAgainBeforeTheirJudgement) {
+  // A new round sent the robot the same view before the last look from here was judged (its
+  // targets were still open): it moves on instead of dwelling again. On the default team, 37-50 %
+  // of the MR1000's judgements were such repeats, and 97 % of them left the target open.
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
+  f.set_route({facade}, {1.5, 1.5, 0}, d.map);
+  ASSERT_TRUE(f.step(0.0, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  const auto done = f.step(10.1, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  EXPECT_FALSE(f.observing());
+  f.set_route({facade, next}, facade.position, d.map);  // a round 0.5 s later: judged at 12.1 s
+  const auto order = f.step(10.6, facade.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  EXPECT_FALSE(f.observing());
+  ASSERT_TRUE(order);
+  EXPECT_EQ(order->path.goal.ground_key, next.ground_key);
+  EXPECT_EQ(f.counters().views_observed, 1);
+  f.step(12.2, facade.position, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  EXPECT_EQ(d.ledger.attempts(kWall), 1);
+  EXPECT_TRUE(d.ledger.tried_from(kWall, facade.position));
+}
+
 TEST(RouteFollower, AJudgementSaysHowTheSpotStoodToTheTarget) {
   Drive d;
   d.options.observation_time_s = 1.0;
@@ -468,6 +491,19 @@ TEST(GiveUpLedger, GivesUpAfterTwoDistinctSpotsOrThreeTries) {
   EXPECT_FALSE(l.failed(2, 10));
   EXPECT_FALSE(l.observed(2, {0, 0, 0}, 10));
   EXPECT_TRUE(l.failed(2, 10));  // three tries of any kind
+}
+
+TEST(GiveUpLedger, ATargetIsTriedFromTheSpotsItStayedOpenFromAndTheirSurroundings) {
+  GiveUpLedger l;
+  EXPECT_FALSE(l.tried(1));
+  EXPECT_FALSE(l.tried_from(1, {0, 0, 0}));
+  l.observed(1, {0, 0, 0.4}, 30);
+  EXPECT_TRUE(l.tried(1));
+  EXPECT_TRUE(l.tried_from(1, {1.0, 0, 0}));   // ground 1 m from where the robot stood
+  EXPECT_FALSE(l.tried_from(1, {2.0, 0, 0}));  // a distinct spot
+  EXPECT_FALSE(l.tried_from(2, {0, 0, 0}));
+  l.failed(3, 10);  // a try that observed nothing marks no spot
+  EXPECT_FALSE(l.tried(3));
 }
 
 TEST(GiveUpLedger, AGrownTargetComesBack) {
