@@ -63,7 +63,7 @@ std::vector<CandidateView> candidate_views(const MapContext& ctx, const std::vec
     for (int v : near_views)
       for (uint64_t t : views[size_t(v)].targets) {
         const highlevel::Supervoxel* sv = ctx.map.find(t);
-        if (!sv) continue;
+        if (!sv || ctx.tried_from(t, g->center)) continue;  // its task view stays a candidate
         if (sv->facade()) {
           const ViewGeometry geo = view_geometry(sensor, g->normal, sv->center, sv->normal);
           if (geo.distance_m >= max_range || !angles_ok(geo, o)) continue;

@@ -47,11 +47,6 @@ bool GiveUpLedger::near_a_spot(const Record& r, const Eigen::Vector3d& spot) con
   return std::any_of(r.spots.begin(), r.spots.end(), [&](const Eigen::Vector3d& s) { return (s - spot).squaredNorm() < d2; });
 }
 
-bool GiveUpLedger::tried(uint64_t key) const {
-  const auto it = records_.find(key);
-  return it != records_.end() && !it->second.spots.empty();
-}
-
 int GiveUpLedger::attempts(uint64_t key) const {
   const auto it = records_.find(key);
   return it == records_.end() ? 0 : it->second.attempts;

@@ -44,8 +44,6 @@ class GiveUpLedger {
   // `spot`. A second look from there sees what the first saw (the data of the default team:
   // 97 % of such repeats left the target open), so the next view of it stands elsewhere.
   bool tried_from(uint64_t key, const Eigen::Vector3d& spot) const;
-  // Whether the target stayed incomplete after an observation from any spot.
-  bool tried(uint64_t key) const;
   // Tries so far (observed or failed) per target.
   int attempts(uint64_t key) const;
   std::unordered_map<uint64_t, int> attempt_counts() const;

@@ -47,6 +47,7 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
     double score;
     const highlevel::Supervoxel* ground;
     ViewGeometry geometry;
+    bool tried;  // the target stayed open when observed from here: taken only when no other spot sees it
   };
   std::vector<Scored> ok;
   ok.reserve(candidates.size());
@@ -56,7 +57,6 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
   const double tn = target.normal.norm();
   const Eigen::Vector3d target_n = tn > 1e-9 ? Eigen::Vector3d(target.normal / tn) : Eigen::Vector3d::UnitZ();
   for (const auto* g : candidates) {
-    if (ctx.tried_from(target.key, g->center)) continue;
     const Eigen::Vector3d gn = g->normal.normalized();
     const Eigen::Vector3d m = target.center - (g->center + gn * o.sensor_height_m);
     const double d2 = m.squaredNorm();
@@ -68,11 +68,12 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
     const Eigen::Vector3d sensor = g->center + gn * o.sensor_height_m;
     const ViewGeometry geo = view_geometry(sensor, g->normal, target.center, target.normal);
     if (!angles_ok(geo, o)) continue;
-    ok.push_back({visibility_score(geo, o), g, geo});
+    ok.push_back({visibility_score(geo, o), g, geo, ctx.tried_from(target.key, g->center)});
   }
   if (sighted && !ok.empty()) *sighted = true;
   // Ray casts are the expensive part: try candidates best-first and stop at the first clear one.
   std::sort(ok.begin(), ok.end(), [](const Scored& a, const Scored& b) {
+    if (a.tried != b.tried) return b.tried;
     return a.score != b.score ? a.score > b.score : a.ground->key < b.ground->key;
   });
   for (const auto& s : ok) {
@@ -134,13 +135,12 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
                                &st.rays_cast, &sighted, &team);
       if (r >= range) break;
       const double beyond = r - o.sensor_height_m;
-      if (found && beyond > 0 && view.score >= 1.0 / (o.beta_l * beyond)) break;
+      // (A spot the target was observed from in vain is only a fallback: look farther first.)
+      if (found && beyond > 0 && view.score >= 1.0 / (o.beta_l * beyond) && !ctx.tried_from(sv.key, view.position)) break;
     }
     if (!found) {
       ++st.unobservable_facades;
-      // Observed already, and no other spot sees it: as good as given up.
-      const bool tried = ctx.given_up && ctx.given_up->tried(key);
-      record(key, tried ? TargetOutcome::kGivenUp : sighted ? TargetOutcome::kOccluded : TargetOutcome::kNoViewpoint);
+      record(key, sighted ? TargetOutcome::kOccluded : TargetOutcome::kNoViewpoint);
       continue;
     }
     view.observation_requirement = observation_requirement((view.position - sv.center).norm(), team);
@@ -166,11 +166,6 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     if (!ctx.is_reachable(key)) {
       ++st.unreachable_ground;
       record(key, TargetOutcome::kUnreachable);
-      continue;
-    }
-    if (ctx.tried_from(key, sv.center)) {  // stood on and still incomplete: as good as given up
-      ++st.ignored;
-      record(key, TargetOutcome::kGivenUp);
       continue;
     }
     TaskView view;

@@ -36,8 +36,7 @@ struct TaskView {
 // What view generation made of one ISE supervoxel inside the exploration region.
 enum class TargetOutcome : uint8_t {
   kView = 0,           // it has a task view (its own, or a composite facade view's)
-  kGivenUp = 1,        // the team gave up on it (observed from its views, still incomplete), or
-                       // it stayed incomplete from every spot that sees it (GiveUpLedger::tried_from)
+  kGivenUp = 1,        // the team gave up on it (observed from its views, still incomplete)
   kNoViewpoint = 2,    // facade: no ground a robot reaches within range at a valid angle
   kOccluded = 3,       // facade: such ground exists, but every line of sight is blocked
   kUnreachable = 4,    // ground: no robot can stand on it
@@ -95,7 +94,10 @@ struct MapContext {
   }
   bool is_reachable(uint64_t ground_key) const { return !reachable || reachable->count(ground_key); }
   // The target stayed incomplete when observed from about this spot (GiveUpLedger::tried_from):
-  // no view of it stands there again, so its next observation comes from another spot.
+  // its next view stands elsewhere where another spot sees it. Where none does, the same spot
+  // serves again and the ledger's attempts give the target up: a target dropped on one robot's
+  // ledger alone would keep a view on its teammates' and could be assigned to no one who takes
+  // it (the robots' ledgers share given-up targets, not the spots they tried).
   bool tried_from(uint64_t target, const Eigen::Vector3d& spot) const {
     return given_up && given_up->tried_from(target, spot);
   }

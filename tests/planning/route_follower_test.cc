@@ -495,15 +495,13 @@ TEST(GiveUpLedger, GivesUpAfterTwoDistinctSpotsOrThreeTries) {
 
 TEST(GiveUpLedger, ATargetIsTriedFromTheSpotsItStayedOpenFromAndTheirSurroundings) {
   GiveUpLedger l;
-  EXPECT_FALSE(l.tried(1));
   EXPECT_FALSE(l.tried_from(1, {0, 0, 0}));
   l.observed(1, {0, 0, 0.4}, 30);
-  EXPECT_TRUE(l.tried(1));
   EXPECT_TRUE(l.tried_from(1, {1.0, 0, 0}));   // ground 1 m from where the robot stood
   EXPECT_FALSE(l.tried_from(1, {2.0, 0, 0}));  // a distinct spot
   EXPECT_FALSE(l.tried_from(2, {0, 0, 0}));
   l.failed(3, 10);  // a try that observed nothing marks no spot
-  EXPECT_FALSE(l.tried(3));
+  EXPECT_FALSE(l.tried_from(3, {0, 0, 0}));
 }
 
 TEST(GiveUpLedger, AGrownTargetComesBack) {
