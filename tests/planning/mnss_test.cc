@@ -33,18 +33,31 @@ TEST(OrderViews, CheapestOpenPathBetweenVirtualEnds) {
   EXPECT_EQ(backward.back().key, 2u);
 }
 
-TEST(Mnss, CoversEveryTargetWithFewerViews) {
-  core::TeamConfig team;
-  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
-  const TeamCapabilities caps = capabilities_from(team);
+// The team's two species on a 30 x 20 m ground grid with one 9 x 8 m building.
+struct OneBuilding {
+  core::TeamConfig team = [] {
+    core::TeamConfig t;
+    t.species = {core::builtin_slugcat(), core::builtin_mr1000()};
+    return t;
+  }();
+  TeamCapabilities caps = capabilities_from(team);
   PlannerOptions o = PlannerOptions::from(team.params);
-  SyntheticSceneOptions scene;
-  scene.width_cells = 30;
-  scene.depth_cells = 20;
-  scene.buildings = {{5, 5, 14, 13, 5}};
-  scene.rubble = {};
-  highlevel::HighLevelMap map(highlevel::species_levels(team));
-  map.apply(synthetic_scene(scene));
+  highlevel::HighLevelMap map{highlevel::species_levels(team)};
+  OneBuilding() {
+    SyntheticSceneOptions scene;
+    scene.width_cells = 30;
+    scene.depth_cells = 20;
+    scene.buildings = {{5, 5, 14, 13, 5}};
+    scene.rubble = {};
+    map.apply(synthetic_scene(scene));
+  }
+};
+
+TEST(Mnss, CoversEveryTargetWithFewerViews) {
+  OneBuilding b;
+  const TeamCapabilities& caps = b.caps;
+  const PlannerOptions& o = b.o;
+  highlevel::HighLevelMap& map = b.map;
   const MapContext ctx(map, o);
   const auto views = generate_task_views(ctx, caps, o);
   const auto clusters = cluster_views(views, o.eta_r_m);
@@ -79,17 +92,10 @@ TEST(Mnss, CoversEveryTargetWithFewerViews) {
 // Once a target stayed incomplete when observed from a spot, neither MNSS nor the route's
 // pruning hands it to a view standing there again (GiveUpLedger::tried_from).
 TEST(Mnss, NoViewStandsWhereItsTargetWasObservedInVain) {
-  core::TeamConfig team;
-  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
-  const TeamCapabilities caps = capabilities_from(team);
-  PlannerOptions o = PlannerOptions::from(team.params);
-  SyntheticSceneOptions scene;
-  scene.width_cells = 30;
-  scene.depth_cells = 20;
-  scene.buildings = {{5, 5, 14, 13, 5}};
-  scene.rubble = {};
-  highlevel::HighLevelMap map(highlevel::species_levels(team));
-  map.apply(synthetic_scene(scene));
+  OneBuilding b;
+  const TeamCapabilities& caps = b.caps;
+  const PlannerOptions& o = b.o;
+  highlevel::HighLevelMap& map = b.map;
   GiveUpLedger ledger;
   auto tours = [&] {
     const MapContext ctx(map, o, std::nullopt, &ledger);
