@@ -65,8 +65,10 @@ inline Facing facing_of_key(uint64_t supervoxel_key) {
 
 struct Supervoxel {
   uint64_t key = 0;                                  // supervoxel_key(seed cell, surface, facing)
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // mean voxel coordinate, metres
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // mean voxel normal (unit)
+  // Mean voxel coordinate (metres) and mean voxel normal (unit); of the incomplete voxels only
+  // while an incomplete facade (supervoxel_stats.h: the paper's ISE supervoxel).
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   bool covered = false;           // Q = 1: every voxel is a CSE (else ISE)
   int traversal_requirement = 0;  // lowest capability level with all voxels low-risk; 0 = N/A
   SurfaceClass surface = SurfaceClass::kUnspecified;

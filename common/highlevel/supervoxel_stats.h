@@ -17,6 +17,8 @@ struct VoxelSetStats {
   int64_t covered = 0;
   int64_t mean_um[3] = {0, 0, 0};    // sum of Gaussian means, micrometres
   int64_t normal_u[3] = {0, 0, 0};   // sum of normals, 1e-6 units
+  int64_t open_mean_um[3] = {0, 0, 0};   // the same two sums over the incomplete voxels only
+  int64_t open_normal_u[3] = {0, 0, 0};
   std::vector<int64_t> low_risk;     // per species: voxels low-risk for it
   int64_t gaps[core::kCoverageGapCount] = {};  // voxels per coverage gap
 
@@ -25,7 +27,8 @@ struct VoxelSetStats {
   void add(const VoxelSetStats& s);
 };
 
-// The supervoxel `key` of a voxel set: centre = mean voxel mean, normal = mean normal,
+// The supervoxel `key` of a voxel set: centre = mean voxel mean, normal = mean normal (of
+// its incomplete voxels only while an incomplete facade, the paper's ISE supervoxel),
 // traversal requirement from the species `levels`, and covered unless it holds an ISE patch
 // (`has_ise_patch`, which the caller judges: it needs the voxels' adjacency). An incomplete
 // supervoxel's gap is the one most of its incomplete voxels share.

@@ -1,5 +1,7 @@
 #include "common/highlevel/supervoxel_stats.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 namespace hexplore::highlevel {
@@ -39,6 +41,34 @@ TEST(SupervoxelStats, ASupervoxelWithoutAnIsePatchIsCovered) {
   EXPECT_FALSE(supervoxel_from(1, s, true, {1}).covered);
   EXPECT_TRUE(supervoxel_from(1, s, false, {1}).covered);
   EXPECT_EQ(supervoxel_from(1, s, true, {1}).gap, core::CoverageGap::kAngle);
+}
+
+TEST(SupervoxelStats, AnIncompleteFacadeIsLocatedAndOrientedByItsIncompleteVoxels) {
+  // A wall facing -y: its left half complete, its right half incomplete and leaning up by 40 deg
+  // (an edge the first view met beyond the angle threshold).
+  const Eigen::Vector3f leaning = Eigen::Vector3f(0.0f, -std::cos(0.7f), std::sin(0.7f));
+  VoxelSetStats s;
+  for (int i = 0; i < 4; ++i) {
+    VoxelSample v;
+    v.mean = {0.15f * float(i), 0.0f, 1.0f};
+    const bool covered = i < 2;
+    const Eigen::Vector3f n = covered ? Eigen::Vector3f(0.0f, -1.0f, 0.0f) : leaning;
+    v.normal = {n.x(), n.y(), n.z()};
+    v.flags = covered ? kVoxelCovered : 0u;
+    v.gap = covered ? core::CoverageGap::kNone : core::CoverageGap::kAngle;
+    s.add(v, +1, 1);
+  }
+  const uint64_t facade = supervoxel_key({0, 0, 0}, SurfaceClass::kFacade, Facing::kMinusY);
+  const Supervoxel open = supervoxel_from(facade, s, true, {1});
+  ASSERT_FALSE(open.covered);
+  EXPECT_NEAR(open.center.x(), 0.375, 1e-6);  // the mean of the two incomplete voxels, not 0.225
+  EXPECT_NEAR(open.normal.dot(leaning.cast<double>().normalized()), 1.0, 1e-6);
+  // Without an ISE patch it counts as covered and is located by all its voxels again.
+  const Supervoxel covered = supervoxel_from(facade, s, false, {1});
+  EXPECT_NEAR(covered.center.x(), 0.225, 1e-6);
+  // Ground stays where all its voxels are: it is a topology vertex.
+  const Supervoxel ground = supervoxel_from(supervoxel_key({0, 0, 0}, SurfaceClass::kGround), s, true, {1});
+  EXPECT_NEAR(ground.center.x(), 0.225, 1e-6);
 }
 
 }  // namespace
