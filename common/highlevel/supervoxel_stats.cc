@@ -65,10 +65,10 @@ Supervoxel supervoxel_from(uint64_t key, const VoxelSetStats& total, bool has_is
   // paper segments the ISE voxels on their own, so its ISE supervoxel (the coverage target) is
   // made of them. Located by all its voxels, a wall patch whose edge voxels failed on the angle
   // kept the mean normal its first view had met, so every view along the same line passed J
-  // again and failed again (common/planning/README.md, "Targets located by what is left").
+  // again and failed again (common/planning/README.md, "Targets located by what is left of them").
   // Ground keeps the centre of all its voxels: it is a topology vertex.
   sv.center = mean_position(total.mean_um, total.count);
-  sv.normal = mean_direction(total.normal_u, sv.normal);
+  sv.normal = mean_direction(total.normal_u, Eigen::Vector3d::UnitZ());
   const int64_t open = total.count - total.covered;
   if (!sv.covered && sv.facade() && open > 0) {
     sv.center = mean_position(total.open_mean_um, open);
