@@ -39,6 +39,17 @@ Fragment fragment_from_pose(const std::string& id, const v1::RobotPose& pose, co
   return f;
 }
 
+// A fragment moved to where the teammate was measured: the box goes with it, and the trail
+// keeps the predicted place too (hold-off keeps clear of both and everything between).
+void move_to_measured(Fragment& f, const Eigen::Vector3d& measured) {
+  if (f.trail_m.empty()) f.trail_m.push_back(f.position_m);
+  f.trail_m.push_back(measured);
+  const Eigen::Vector3d moved = measured - f.position_m;
+  f.position_m = measured;
+  f.box_min_m += moved;
+  f.box_max_m += moved;
+}
+
 }  // namespace
 
 void SafetyService::setup(service::ServiceContext& context) {
@@ -217,13 +228,28 @@ Eigen::Vector3d SafetyService::half_extents_of(const std::string& id) const {
   return species ? species->body_half_extents_m : Eigen::Vector3d(0.5, 0.5, 0.5);
 }
 
+bool SafetyService::pose_is_newer(const Peer& peer) const {
+  // Sim stamps when both messages carry one (they order sends, not arrivals); else arrival.
+  if (peer.pose_sim_ns > 0 && peer.fragment_sim_ns > 0) return peer.pose_sim_ns > peer.fragment_sim_ns;
+  return peer.pose_ns > peer.fragment_ns;
+}
+
 std::vector<Fragment> SafetyService::peers() const {
   std::vector<Fragment> out;
   for (const auto& [id, peer] : peers_) {
     if (peer.fragment && !stale(peer.fragment_ns, peer.fragment_sim_ns)) {
       // Where the teammate is by now, driving the path it shared.
-      out.push_back(advance_fragment(*peer.fragment, age_s(peer.fragment_ns, peer.fragment_sim_ns),
-                                     resolver_->options().eta_p_m));
+      Fragment f = advance_fragment(*peer.fragment, age_s(peer.fragment_ns, peer.fragment_sim_ns),
+                                    resolver_->options().eta_p_m);
+      if (peer.pose && pose_is_newer(peer)) {
+        // Its driver has spoken since: the body is where the pose puts it (a stop decided a
+        // moment ago still rolls on until the driver hears it; a fragment predicts, a pose
+        // measures). Between the two it may be anywhere, so the trail joins them.
+        const Fragment measured = fragment_from_pose(id, *peer.pose, half_extents_of(id),
+                                                     age_s(peer.pose_ns, peer.pose_sim_ns), resolver_->options().eta_p_m);
+        move_to_measured(f, measured.position_m);
+      }
+      out.push_back(std::move(f));
     } else if (peer.pose) {
       Fragment f = fragment_from_pose(id, *peer.pose, half_extents_of(id), age_s(peer.pose_ns, peer.pose_sim_ns),
                                       resolver_->options().eta_p_m);

@@ -55,9 +55,11 @@ class SafetyService : public service::Service {
   // One decision: resolve, command the driver, share the fragment.
   void cycle();
   void halt(const std::string& reason);
-  // Every teammate heard of: its fresh fragment, else a fragment from its pose (a silent
-  // teammate stays, as a stopped box at its last pose).
+  // Every teammate heard of: its fresh fragment (moved to where a newer pose puts it), else a
+  // fragment from its pose (a silent teammate stays, as a stopped box at its last pose).
   std::vector<Fragment> peers() const;
+  // Whether the teammate's latest pose was sent after its latest fragment.
+  bool pose_is_newer(const Peer& peer) const;
   // Whether a message received at (wall, sim) is too old to act on.
   bool stale(int64_t received_ns, int64_t sent_sim_ns) const;
   // Seconds since a message of (wall, sim) was sent, on the clock stale() uses.

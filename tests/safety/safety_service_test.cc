@@ -119,10 +119,16 @@ class SafetyServiceTest : public ::testing::Test {
     return std::abs(end.x() - x) < 1e-6 && std::abs(end.y() - y) < 1e-6;
   }
   bool stopped() const { return last_motion_ && last_motion_->has_stop(); }
-  // Every approved waypoint keeps both bodies apart from a robot standing at (x, y).
+  // Every point of the approved path keeps both bodies apart from a robot standing at (x, y).
   void expect_clear_of(double x, double y) const {
-    for (const auto& w : last_motion_->follow().waypoints_m())
-      EXPECT_GT(std::hypot(w.x() - x, w.y() - y), 0.61 + 0.54) << w.x() << "," << w.y();
+    const auto& w = last_motion_->follow().waypoints_m();
+    for (int i = 1; i < w.size(); ++i) {
+      for (double t = 0.0; t <= 1.0; t += 0.05) {
+        const double px = w[i - 1].x() + t * (w[i].x() - w[i - 1].x());
+        const double py = w[i - 1].y() + t * (w[i].y() - w[i - 1].y());
+        EXPECT_GT(std::hypot(px - x, py - y), 0.61 + 0.54) << px << "," << py;
+      }
+    }
   }
 
   std::unique_ptr<service::ServiceHost> host_;
@@ -208,6 +214,28 @@ TEST_F(SafetyServiceTest, TeammateKnownOnlyByItsPoseIsDrivenAround) {
   };
   ASSERT_TRUE(until(feed, [&] { return following_to(10, 0) && last_motion_->follow().waypoints_m_size() > 2; }));
   expect_clear_of(4, 0);
+}
+
+TEST_F(SafetyServiceTest, ANewerPoseMovesATeammateAwayFromItsLastFragment) {
+  // r2's last fragment says it stands at (8, 0); its driver's pose, sent after it, measures it
+  // at (3, 0) on r1's way (it rolled on after the stop was decided, or the newer fragment is
+  // late). r1 must keep clear of (3, 0), not only of the box the fragment drew at (8, 0).
+  v1::PathFragment fragment;
+  set(fragment.mutable_position_m(), 8, 0);
+  fragment.set_stationary(true);
+  const v1::RobotPose r2 = standing_mr1000(3, 0);
+  const auto feed = [&] {
+    send_pose(0, 0);
+    send_path(0, 0, 10, 0);
+    // The fragment is always 100 ms older than the pose (older than the previous pose too,
+    // so the order of arrival does not matter).
+    peer_->publish(topics::kTeamPath, fragment, sim_time_ns_ - 100'000'000);
+    peer_sim_->publish(topics::kTeamPose, r2, sim_time_ns_);
+  };
+  // Fed long enough for both teammate messages to have arrived and been decided on.
+  ASSERT_TRUE(until(feed, [&] { return sim_time_ns_ > 2'000'000'000 && last_motion_.has_value(); },
+                    std::chrono::milliseconds(10000)));
+  if (last_motion_->has_follow()) expect_clear_of(3, 0);
 }
 
 TEST_F(SafetyServiceTest, ASilentTeammateStaysAnObstacleAtItsLastPose) {
