@@ -80,8 +80,12 @@ void RouteFollower::set_route(std::vector<TaskView> route, const Eigen::Vector3d
   // An observation in progress is finished first (the cost model paid for it); views of the
   // new route at the spot being observed are part of it.
   while (observing_ && next_ < route_.size() && reached(route_[next_], observe_spot_)) {
-    const auto& targets = route_[next_++].targets;
-    observed_targets_.insert(observed_targets_.end(), targets.begin(), targets.end());
+    const TaskView& view = route_[next_++];
+    for (uint64_t t : view.targets) {
+      if (std::find(observed_targets_.begin(), observed_targets_.end(), t) != observed_targets_.end()) continue;
+      observed_targets_.push_back(t);
+      if (view.facade) add_aim(t, map);
+    }
   }
   keep_stretch(next_, stretch);
 }
@@ -136,18 +140,27 @@ std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector
   track_progress(now_s, position, state);
 
   if (observing_) {
-    // Done at the end of the dwell, or as soon as every target it is for is complete (the
-    // map lags the scans by about a settle time, so this never cuts a dwell short by more).
+    // Each aim lasts its target's observation time, and ends early once that target is
+    // complete (or given up): a look at one target often completes the next ones too, whose
+    // aims are then passed over. The dwell is over when the aims are, or as soon as every
+    // target it is for is complete (the map lags the scans by about a settle time, so this
+    // never cuts a dwell short by more).
+    const size_t was = aim_index_;
+    const bool time_left = was < aims_.size() && now_s - aim_start_s_ < aim_time_s();
+    while (aim_index_ < aims_.size() &&
+           (!open_target(aims_[aim_index_].target, map, ledger) || now_s - aim_start_s_ >= aim_time_s())) {
+      ++aim_index_;
+      aim_start_s_ = now_s;
+    }
     const bool all_done = std::none_of(observed_targets_.begin(), observed_targets_.end(),
                                        [&](uint64_t t) { return open_target(t, map, ledger); });
-    if (now_s >= observe_until_s_ || all_done) {
-      if (all_done) ++counters_.dwells_cut_short;
+    const bool aims_over = aim_index_ >= aims_.size() && now_s - observe_start_s_ >= options_.min_aim_s;
+    if (aims_over || all_done) {
+      if (all_done && time_left) ++counters_.dwells_cut_short;
       finish_observing(now_s, position);
       return drive(position, map, keep_off, ledger);
     }
-    const double per_aim = (observe_until_s_ - observe_start_s_) / double(aims_.size());
-    const size_t index = std::min(aims_.size() - 1, size_t((now_s - observe_start_s_) / per_aim));
-    return index != aim_index_ ? aim(index, position) : std::nullopt;
+    return aim_index_ != was && aim_index_ < aims_.size() ? aim(aim_index_, position) : std::nullopt;
   }
   if (backing_off_) {
     // The back-off leg ends at its point, or where it cannot go on (blocked there too, or no
@@ -187,39 +200,43 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
   // are still open; a view with none left costs no dwell.
   observed_targets_.clear();
   aims_.clear();
-  int facade_views = 0;
   for (; next_ < route_.size() && reached(route_[next_], position); ++next_) {
     const TaskView& v = route_[next_];
     ++counters_.views_reached;
-    bool facade_open = false;
     for (uint64_t t : v.targets) {
       // Observed from here a moment ago and not judged yet: a second look from the same spot
       // would only delay the verdict (the next view of it stands elsewhere if it fails).
       if (!open_target(t, map, ledger) || awaiting_judgement(t, position, ledger.rules().distinct_m)) continue;
       observed_targets_.push_back(t);
-      const highlevel::Supervoxel* sv = map.find(t);
-      if (v.facade && sv->facade()) {
-        aims_.push_back(sv->center);
-        facade_open = true;
-      }
+      if (v.facade) add_aim(t, map);
     }
-    if (facade_open) ++facade_views;
   }
   driving_ = false;
-  const double dwell = facade_views * options_.observation_time_s;
-  if (dwell <= 0.0) {  // ground views: observed on arrival
+  if (aims_.empty() || options_.observation_time_s <= 0.0) {  // ground views: observed on arrival
+    aims_.clear();
     pending_.push_back({observed_targets_, position, now_s + options_.settle_s});
     return std::nullopt;
   }
-  // A sweep gives each aim at least min_aim_s; with less time, the first aims only.
-  const size_t fit = std::max<size_t>(1, size_t(dwell / std::max(1e-3, options_.min_aim_s)));
-  if (aims_.size() > fit) aims_.resize(fit);
   observing_ = true;
   observe_start_s_ = now_s;
-  observe_until_s_ = now_s + dwell;
+  aim_start_s_ = now_s;
   observe_spot_ = position;
   ++counters_.views_observed;
   return aim(0, position);
+}
+
+void RouteFollower::add_aim(uint64_t target, const highlevel::HighLevelMap& map) {
+  const highlevel::Supervoxel* sv = map.find(target);
+  if (sv == nullptr || !sv->facade()) return;
+  if (std::any_of(aims_.begin(), aims_.end(), [&](const Aim& a) { return a.target == target; })) return;
+  aims_.push_back({target, sv->center});
+}
+
+double RouteFollower::aim_time_s() const {
+  // A gimbal gives each target its own time, and at least one scan; sensors that see them all
+  // at once spend the sum of their times on all (aims then only pace the dwell).
+  return options_.aim_each_target ? std::max(options_.observation_time_s, options_.min_aim_s)
+                                  : options_.observation_time_s;
 }
 
 std::optional<MotionOrder> RouteFollower::aim(size_t target_index, const Eigen::Vector3d& position) {
@@ -229,7 +246,7 @@ std::optional<MotionOrder> RouteFollower::aim(size_t target_index, const Eigen::
   order.path.valid = true;
   order.path.waypoints = {position};
   order.path.goal.position = position;
-  order.path.goal.look_at = aims_[target_index];
+  order.path.goal.look_at = aims_[target_index].at;
   order.path.goal.facade = true;
   return order;
 }

@@ -1,9 +1,10 @@
 #pragma once
 // Executes one robot's exploration route the way the cost model assumes (paper eq.
-// 4-xx-delta charges 1 / observation speed per facade view): drive to the next view along
-// its executable path, stop there and point the sensors at the view's targets for the
-// species' observation time (the gimbal of a long-range LiDAR sweeps them one after the
-// other), then move on. A ground view is done on arrival ("observed once a robot reaches its
+// 4-xx-delta charges 1 / observation speed per facade task view, and a task view is one
+// target): drive to the next view along its executable path, stop there and observe each of
+// its open facade targets for the species' observation time (the gimbal of a long-range LiDAR
+// aims at them one after the other, moving on early when the target aimed at is complete;
+// fixed sensors observe them all at once for the sum of their times), then move on. A ground view is done on arrival ("observed once a robot reaches its
 // centre"). Views whose targets are all complete (or given up) by the time the robot gets
 // there are passed by, and a dwell ends as soon as its targets are complete. Whether the
 // targets got complete is judged a settle time later, when the map has caught up with the
@@ -37,8 +38,13 @@ struct FollowerOptions {
   double observe_reach_m = 0.3;
   double blocked_s = 2.0;           // blocked by terrain this long: skip the view
   double stuck_s = 8.0;             // no 0.5 m of progress this long: skip the view
-  double observation_time_s = 0.0;  // dwell at a facade view: 1 / vartheta_varsigma of the species
-  double min_aim_s = 0.5;           // shortest time the sensors stay on one target of a sweep
+  // Dwell per open facade target of a view: 1 / vartheta_varsigma of the species (the paper's
+  // observation speed counts facade task views, one per target, per second).
+  double observation_time_s = 0.0;
+  // Whether the sensors aim at one target at a time (a gimbal): then each target gets its own
+  // observation time in turn; otherwise all are observed at once, for the sum of their times.
+  bool aim_each_target = false;
+  double min_aim_s = 0.5;           // shortest look at anything: one scan period of the simulated LiDARs
   double settle_s = 2.0;            // map lag: coverage is judged this long after the observation
   // A new round keeps the stretch being worked on: the old route's views that followed the leg
   // (or the spot being observed) within this distance of it (straight and along the path), and that the new route still
@@ -136,6 +142,10 @@ class RouteFollower {
   std::optional<MotionOrder> begin_observing(double now_s, const Eigen::Vector3d& position,
                                              const highlevel::HighLevelMap& map, const GiveUpLedger& ledger);
   std::optional<MotionOrder> aim(size_t target_index, const Eigen::Vector3d& position);
+  // Queues a facade target to aim at (once).
+  void add_aim(uint64_t target, const highlevel::HighLevelMap& map);
+  // How long one aim lasts at most.
+  double aim_time_s() const;
   void finish_observing(double now_s, const Eigen::Vector3d& position);
   // Whether `target` was observed from within `distinct_m` of `position` and is not judged yet.
   bool awaiting_judgement(uint64_t target, const Eigen::Vector3d& position, double distinct_m) const;
@@ -155,13 +165,17 @@ class RouteFollower {
   std::vector<TaskView> route_;
   size_t next_ = 0;  // the view being driven to
 
-  // Observing: the view(s) reached, their facade targets' centres to aim at, the clock.
+  // Observing: the view(s) reached, their open facade targets to aim at, the clock.
+  struct Aim {
+    uint64_t target;
+    Eigen::Vector3d at;
+  };
   bool observing_ = false;
   std::vector<uint64_t> observed_targets_;
-  std::vector<Eigen::Vector3d> aims_;
+  std::vector<Aim> aims_;
   size_t aim_index_ = 0;
+  double aim_start_s_ = 0.0;
   double observe_start_s_ = 0.0;
-  double observe_until_s_ = 0.0;
   Eigen::Vector3d observe_spot_ = Eigen::Vector3d::Zero();
   double last_step_s_ = 0.0;
 

@@ -95,8 +95,11 @@ void PlanningService::setup(service::ServiceContext& context) {
   follow.keep_stretch_m = parse_positive(args, "keep-stretch-m", follow.keep_stretch_m);
   follow.switch_gain_m = parse_positive(args, "switch-gain-m", follow.switch_gain_m);
   follow.record_judgements = trace_.is_open();
-  // The cost model charges 1 / observation speed per facade view; execution spends it.
+  // The cost model charges 1 / observation speed per facade task view (one per target);
+  // execution spends it on each open target, one at a time where a gimbal aims the sensor.
   follow.observation_time_s = species->observation_speed_views_per_s > 0 ? 1.0 / species->observation_speed_views_per_s : 0.0;
+  follow.aim_each_target = std::any_of(species->lidars.begin(), species->lidars.end(),
+                                       [](const core::LidarConfig& l) { return l.gimbal; });
   if (auto it = args.find("observe"); it != args.end()) {
     if (it->second == "false") follow.observation_time_s = 0.0;
     else if (it->second != "true")
