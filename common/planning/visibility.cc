@@ -49,8 +49,9 @@ bool angles_ok(const ViewGeometry& g, const PlannerOptions& o) {
   // The target is a supervoxel, not a point: its far edge is seen at up to atan(extent / d)
   // more than its centre, and every voxel must be within gamma_th for it to be complete.
   const double spread = g.distance_m > 1e-9 ? std::atan2(o.target_half_extent_m, g.distance_m) : M_PI_2;
-  return g.incidence_rad + spread < o.gamma_th_deg * kDegToRad && g.elevation_rad >= o.theta_l_deg * kDegToRad &&
-         g.elevation_rad <= o.theta_u_deg * kDegToRad;
+  const double margin = o.angle_margin_deg;
+  return g.incidence_rad + spread < (o.gamma_th_deg - margin) * kDegToRad &&
+         g.elevation_rad >= (o.theta_l_deg + margin) * kDegToRad && g.elevation_rad <= (o.theta_u_deg - margin) * kDegToRad;
 }
 
 double ground_view_score(const highlevel::Supervoxel& ground, const highlevel::Supervoxel& target, double range_m,
