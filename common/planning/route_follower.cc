@@ -146,9 +146,9 @@ std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector
     // target it is for is complete (the map lags the scans by about a settle time, so this
     // never cuts a dwell short by more).
     const size_t was = aim_index_;
-    const bool time_left = was < aims_.size() && now_s - aim_start_s_ < aim_time_s();
+    const bool time_left = was < aims_.size() && now_s - aim_start_s_ < aim_s_;
     while (aim_index_ < aims_.size() &&
-           (!open_target(aims_[aim_index_].target, map, ledger) || now_s - aim_start_s_ >= aim_time_s())) {
+           (!open_target(aims_[aim_index_].target, map, ledger) || now_s - aim_start_s_ >= aim_s_)) {
       ++aim_index_;
       aim_start_s_ = now_s;
     }
@@ -200,9 +200,11 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
   // are still open; a view with none left costs no dwell.
   observed_targets_.clear();
   aims_.clear();
+  int facade_views = 0;
   for (; next_ < route_.size() && reached(route_[next_], position); ++next_) {
     const TaskView& v = route_[next_];
     ++counters_.views_reached;
+    const size_t aims_before = aims_.size();
     for (uint64_t t : v.targets) {
       // Observed from here a moment ago and not judged yet: a second look from the same spot
       // would only delay the verdict (the next view of it stands elsewhere if it fails).
@@ -210,6 +212,7 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
       observed_targets_.push_back(t);
       if (v.facade) add_aim(t, map);
     }
+    if (aims_.size() > aims_before) ++facade_views;
   }
   driving_ = false;
   if (aims_.empty() || options_.observation_time_s <= 0.0) {  // ground views: observed on arrival
@@ -217,6 +220,7 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
     pending_.push_back({observed_targets_, position, now_s + options_.settle_s});
     return std::nullopt;
   }
+  aim_s_ = plan_aims(facade_views);
   observing_ = true;
   observe_start_s_ = now_s;
   aim_start_s_ = now_s;
@@ -232,11 +236,19 @@ void RouteFollower::add_aim(uint64_t target, const highlevel::HighLevelMap& map)
   aims_.push_back({target, sv->center});
 }
 
-double RouteFollower::aim_time_s() const {
-  // A gimbal gives each target its own time, and at least one scan; sensors that see them all
-  // at once spend the sum of their times on all (aims then only pace the dwell).
-  return options_.aim_each_target ? std::max(options_.observation_time_s, options_.min_aim_s)
-                                  : options_.observation_time_s;
+double RouteFollower::plan_aims(int facade_views) {
+  const double obs = options_.observation_time_s;
+  if (options_.dwell == FollowerOptions::Dwell::kPerTarget) {
+    // A gimbal gives each target its own time, and at least one scan; sensors that see them
+    // all at once spend the sum of their times on all (the dwell lasts at least one scan).
+    return options_.aim_each_target ? std::max(obs, options_.min_aim_s) : obs;
+  }
+  // One observation time per view, shared: a sweep gives each aim at least one scan, so with
+  // less time the first aims only.
+  const double dwell = std::max(1, facade_views) * obs;
+  const size_t fit = std::max<size_t>(1, size_t(dwell / std::max(1e-3, options_.min_aim_s)));
+  if (aims_.size() > fit) aims_.resize(fit);
+  return dwell / double(aims_.size());
 }
 
 std::optional<MotionOrder> RouteFollower::aim(size_t target_index, const Eigen::Vector3d& position) {

@@ -38,11 +38,15 @@ struct FollowerOptions {
   double observe_reach_m = 0.3;
   double blocked_s = 2.0;           // blocked by terrain this long: skip the view
   double stuck_s = 8.0;             // no 0.5 m of progress this long: skip the view
-  // Dwell per open facade target of a view: 1 / vartheta_varsigma of the species (the paper's
-  // observation speed counts facade task views, one per target, per second).
+  // 1 / vartheta_varsigma of the species: what one facade task view costs in the cost model.
   double observation_time_s = 0.0;
-  // Whether the sensors aim at one target at a time (a gimbal): then each target gets its own
-  // observation time in turn; otherwise all are observed at once, for the sum of their times.
+  // What it is spent on. kPerTarget: each open facade target of the view (the cost model's
+  // unit: a facade task view is one target). kPerView: the view as a whole, shared by its
+  // targets (common/planning/README.md, "A dwell per target" measures both).
+  enum class Dwell { kPerView, kPerTarget };
+  Dwell dwell = Dwell::kPerView;
+  // Whether the sensors aim at one target at a time (a gimbal): then the targets take turns;
+  // otherwise all are observed at once and the aims only pace the dwell.
   bool aim_each_target = false;
   double min_aim_s = 0.5;           // shortest look at anything: one scan period of the simulated LiDARs
   double settle_s = 2.0;            // map lag: coverage is judged this long after the observation
@@ -144,8 +148,9 @@ class RouteFollower {
   std::optional<MotionOrder> aim(size_t target_index, const Eigen::Vector3d& position);
   // Queues a facade target to aim at (once).
   void add_aim(uint64_t target, const highlevel::HighLevelMap& map);
-  // How long one aim lasts at most.
-  double aim_time_s() const;
+  // How long one aim of this dwell lasts at most, for `facade_views` views with open targets;
+  // with kPerView, aims that do not fit at min_aim_s each are dropped.
+  double plan_aims(int facade_views);
   void finish_observing(double now_s, const Eigen::Vector3d& position);
   // Whether `target` was observed from within `distinct_m` of `position` and is not judged yet.
   bool awaiting_judgement(uint64_t target, const Eigen::Vector3d& position, double distinct_m) const;
@@ -175,6 +180,7 @@ class RouteFollower {
   std::vector<Aim> aims_;
   size_t aim_index_ = 0;
   double aim_start_s_ = 0.0;
+  double aim_s_ = 0.0;  // how long one aim lasts at most (set when the dwell begins)
   double observe_start_s_ = 0.0;
   Eigen::Vector3d observe_spot_ = Eigen::Vector3d::Zero();
   double last_step_s_ = 0.0;

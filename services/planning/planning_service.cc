@@ -96,10 +96,16 @@ void PlanningService::setup(service::ServiceContext& context) {
   follow.switch_gain_m = parse_positive(args, "switch-gain-m", follow.switch_gain_m);
   follow.record_judgements = trace_.is_open();
   // The cost model charges 1 / observation speed per facade task view (one per target);
-  // execution spends it on each open target, one at a time where a gimbal aims the sensor.
+  // --dwell per-target spends it on each open target (one at a time where a gimbal aims the
+  // sensor), per-view on each view's targets together (common/planning/README.md).
   follow.observation_time_s = species->observation_speed_views_per_s > 0 ? 1.0 / species->observation_speed_views_per_s : 0.0;
   follow.aim_each_target = std::any_of(species->lidars.begin(), species->lidars.end(),
                                        [](const core::LidarConfig& l) { return l.gimbal; });
+  if (auto it = args.find("dwell"); it != args.end()) {
+    if (it->second == "per-target") follow.dwell = planning::FollowerOptions::Dwell::kPerTarget;
+    else if (it->second == "per-view") follow.dwell = planning::FollowerOptions::Dwell::kPerView;
+    else throw std::invalid_argument("planning: --dwell expects per-view or per-target, got '" + it->second + "'");
+  }
   if (auto it = args.find("observe"); it != args.end()) {
     if (it->second == "false") follow.observation_time_s = 0.0;
     else if (it->second != "true")

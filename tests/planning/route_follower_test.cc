@@ -141,6 +141,7 @@ TEST(RouteFollower, AGimbalGivesEachOpenTargetItsObservationTimeAndMovesOnWhenIt
   // bench_view_efficacy shows what that buys: 33 % of targets complete after 1 s, 100 % after 10 s.
   Drive d;
   d.options.aim_each_target = true;
+  d.options.dwell = FollowerOptions::Dwell::kPerTarget;
   RouteFollower f(d.options, 0);
   const TaskView three = view_of_three(d.map, {6.5, 6.5, 0});
   const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
@@ -164,9 +165,27 @@ TEST(RouteFollower, AGimbalGivesEachOpenTargetItsObservationTimeAndMovesOnWhenIt
   EXPECT_NEAR(f.counters().observing_s, 13.0, 0.3);
 }
 
+TEST(RouteFollower, PerViewTheTargetsOfAViewShareOneObservationTime) {
+  Drive d;
+  d.options.aim_each_target = true;  // the default dwell: per view
+  RouteFollower f(d.options, 0);
+  const TaskView three = view_of_three(d.map, {6.5, 6.5, 0});
+  const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
+  f.set_route({three, next}, {1.5, 1.5, 0}, d.map);
+  ASSERT_TRUE(f.step(0.0, three.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  const auto second = f.step(3.4, three.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(second);  // 10 s / 3 targets
+  EXPECT_TRUE(second->path.goal.look_at.isApprox(d.map.find(kWall + 1)->center));
+  EXPECT_TRUE(f.step(6.8, three.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  const auto leave = f.step(10.3, three.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(leave);
+  EXPECT_FALSE(leave->observing);
+}
+
 TEST(RouteFollower, FixedSensorsObserveAllTargetsAtOnceForTheSumOfTheirTimes) {
   Drive d;
   d.options.observation_time_s = 0.1;  // a SLUGCAT: ten targets a second, no gimbal
+  d.options.dwell = FollowerOptions::Dwell::kPerTarget;
   RouteFollower f(d.options, 0);
   const TaskView three = view_of_three(d.map, {6.5, 6.5, 0});
   const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
