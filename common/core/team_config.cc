@@ -178,9 +178,9 @@ void validate(const TeamConfig& c) {
   require(p.eta_r_m > 0, c, "params.eta_r_m", "must be > 0");
   require(p.eta_t_s > 0, c, "params.eta_t_s", "must be > 0");
   require(p.theta_l_deg < p.theta_u_deg, c, "params.theta_u_deg", "must be > theta_l_deg");
-  require(p.view_angle_margin_deg >= 0.0 && p.view_angle_margin_deg < p.gamma_th_deg &&
-              2.0 * p.view_angle_margin_deg < p.theta_u_deg - p.theta_l_deg,
-          c, "params.view_angle_margin_deg", "must be >= 0 and leave room inside gamma_th_deg and [theta_l_deg, theta_u_deg]");
+  require(p.shared_view_angle_margin_deg >= 0.0 && p.shared_view_angle_margin_deg < p.gamma_th_deg &&
+              2.0 * p.shared_view_angle_margin_deg < p.theta_u_deg - p.theta_l_deg,
+          c, "params.shared_view_angle_margin_deg", "must be >= 0 and leave room inside gamma_th_deg and [theta_l_deg, theta_u_deg]");
   require(p.ga_population >= 2, c, "params.ga_population", "must be >= 2");
   require(c.time_limit_s > 0, c, "time_limit_s", "must be > 0");
 }

@@ -120,10 +120,12 @@ struct AlgorithmParams {
   // Task views.
   double theta_l_deg = -45.0;
   double theta_u_deg = 45.0;
-  // Margin the planner keeps inside gamma_th and [theta_l, theta_u] when it asks whether a
-  // view sees a target (not in the paper): a target is complete only when every voxel passes
-  // gamma_th on its own normal, and voxel normals scatter around the supervoxel's.
-  double view_angle_margin_deg = 0.0;
+  // Margin the planner keeps inside gamma_th and [theta_l, theta_u] when a spot is to stand in
+  // for other targets' own views (the minimal view set, route pruning, MROMT+'s candidates,
+  // observations in passing; not in the paper): a target is complete only when every voxel
+  // passes gamma_th on its own normal, and voxel normals scatter around the supervoxel's. Each
+  // target's own task view keeps the paper's limits.
+  double shared_view_angle_margin_deg = 0.0;
   double beta_i = 0.5;
   double beta_l = 0.5;
   double beta_zeta = 10.0;

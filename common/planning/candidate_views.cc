@@ -66,7 +66,7 @@ std::vector<CandidateView> candidate_views(const MapContext& ctx, const std::vec
         if (!sv || ctx.tried_from(t, g->center)) continue;  // its task view stays a candidate
         if (sv->facade()) {
           const ViewGeometry geo = view_geometry(sensor, g->normal, sv->center, sv->normal);
-          if (geo.distance_m >= max_range || !angles_ok(geo, o)) continue;
+          if (geo.distance_m >= max_range || !angles_ok(geo, o, o.shared_view_margin_deg)) continue;
           const int req = observation_requirement((g->center - sv->center).norm(), team);
           if (req == 0 || !ctx.occlusion.clear(sensor, sv->center)) continue;
           seen.push_back({t, req, visibility_score(geo, o), true, sv->center});

@@ -48,7 +48,7 @@ PlannerOptions PlannerOptions::from(const core::AlgorithmParams& p) {
   o.gamma_th_deg = p.gamma_th_deg;
   o.theta_l_deg = p.theta_l_deg;
   o.theta_u_deg = p.theta_u_deg;
-  o.angle_margin_deg = p.view_angle_margin_deg;
+  o.shared_view_margin_deg = p.shared_view_angle_margin_deg;
   o.beta_i = p.beta_i;
   o.beta_l = p.beta_l;
   o.beta_zeta = p.beta_zeta;

@@ -51,7 +51,9 @@ struct PlannerOptions {
   double gamma_th_deg = 45.0;   // incidence-angle threshold
   double theta_l_deg = -45.0;   // observation-angle bounds (elevation of the target seen from the view)
   double theta_u_deg = 45.0;
-  double angle_margin_deg = 0.0;  // kept inside both angle limits by J (core::AlgorithmParams::view_angle_margin_deg)
+  // Kept inside both angle limits where a spot stands in for other targets' views
+  // (core::AlgorithmParams::shared_view_angle_margin_deg).
+  double shared_view_margin_deg = 0.0;
   double beta_i = 0.5, beta_l = 0.5;            // Vis weights
   double beta_zeta = 10.0, beta_varsigma = 1.0; // capability score a(k)
   double beta_e = 0.5, beta_c = 1.0, beta_m = 1.5, beta_d = 3.0;

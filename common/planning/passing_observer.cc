@@ -19,7 +19,7 @@ bool PassingObserver::in_view(const highlevel::Supervoxel& sv, const Eigen::Vect
   if (g.distance_m >= passing_.range_m) return false;
   if (g.elevation_rad < passing_.elevation_min_deg * kDegToRad || g.elevation_rad > passing_.elevation_max_deg * kDegToRad)
     return false;
-  if (!angles_ok(g, planner_)) return false;
+  if (!angles_ok(g, planner_, planner_.shared_view_margin_deg)) return false;
   return occlusion.clear(sensor, sv.center);
 }
 

@@ -45,11 +45,11 @@ ViewGeometry view_geometry(const Eigen::Vector3d& sensor, const Eigen::Vector3d&
   return g;
 }
 
-bool angles_ok(const ViewGeometry& g, const PlannerOptions& o) {
+bool angles_ok(const ViewGeometry& g, const PlannerOptions& o, double margin_deg) {
   // The target is a supervoxel, not a point: its far edge is seen at up to atan(extent / d)
   // more than its centre, and every voxel must be within gamma_th for it to be complete.
   const double spread = g.distance_m > 1e-9 ? std::atan2(o.target_half_extent_m, g.distance_m) : M_PI_2;
-  const double margin = o.angle_margin_deg;
+  const double margin = margin_deg;
   return g.incidence_rad + spread < (o.gamma_th_deg - margin) * kDegToRad &&
          g.elevation_rad >= (o.theta_l_deg + margin) * kDegToRad && g.elevation_rad <= (o.theta_u_deg - margin) * kDegToRad;
 }
@@ -62,7 +62,7 @@ double ground_view_score(const highlevel::Supervoxel& ground, const highlevel::S
   }
   const Eigen::Vector3d sensor = ground.center + ground.normal.normalized() * o.sensor_height_m;
   const ViewGeometry geo = view_geometry(sensor, ground.normal, target.center, target.normal);
-  if (geo.distance_m >= range_m || !angles_ok(geo, o)) return 0.0;
+  if (geo.distance_m >= range_m || !angles_ok(geo, o, o.shared_view_margin_deg)) return 0.0;
   ++rays;
   return occlusion.clear(sensor, target.center) ? visibility_score(geo, o) : 0.0;
 }

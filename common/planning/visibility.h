@@ -43,8 +43,10 @@ struct ViewGeometry {
 ViewGeometry view_geometry(const Eigen::Vector3d& sensor, const Eigen::Vector3d& view_normal,
                            const Eigen::Vector3d& target, const Eigen::Vector3d& target_normal);
 
-// The angle part of J (incidence < gamma_th, observation angle within [theta_l, theta_u]).
-bool angles_ok(const ViewGeometry& g, const PlannerOptions& o);
+// The angle part of J (incidence < gamma_th, observation angle within [theta_l, theta_u]),
+// `margin_deg` inside each limit (PlannerOptions::shared_view_margin_deg where a spot stands in
+// for other targets' views; 0 for a target's own view).
+bool angles_ok(const ViewGeometry& g, const PlannerOptions& o, double margin_deg = 0.0);
 
 // Vis = J / (beta_i * Inc + beta_l * |m|), Inc in degrees and |m| in metres; 0 when J = 0 is
 // known. The paper gives no units; with equal weights (0.5, 0.5) degrees make the two terms

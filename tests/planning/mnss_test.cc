@@ -1,5 +1,6 @@
 #include "common/planning/mnss.h"
 
+#include <algorithm>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include "common/planning/mtsp_problem.h"
 #include "common/planning/route_pruning.h"
 #include "common/planning/synthetic_scene.h"
+#include "common/planning/visibility.h"
 
 namespace hexplore::planning {
 namespace {
@@ -87,6 +89,46 @@ TEST(Mnss, CoversEveryTargetWithFewerViews) {
     for (size_t i = 0; i < tour.size(); ++i) EXPECT_EQ(repeat[i].key, tour[i].key);
   }
   EXPECT_LT(total_after, total_before);
+}
+
+// With a shared-view margin, a spot stands in for another target's view only where it sees
+// that target well inside the angle limits; a target no such spot sees keeps its own view.
+TEST(Mnss, ASharedViewSeesItsTargetsInsideTheMargin) {
+  OneBuilding b;
+  b.o.shared_view_margin_deg = 15.0;
+  const TeamCapabilities& caps = b.caps;
+  const PlannerOptions& o = b.o;
+  const MapContext ctx(b.map, o);
+  const auto views = generate_task_views(ctx, caps, o);
+  int shared = 0, own = 0;
+  for (const auto& cl : cluster_views(views, o.eta_r_m)) {
+    if (cl.label != kPublic) continue;
+    Rng rng(3);
+    const auto tour = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, caps.species[0],
+                                cl.center + Eigen::Vector3d(-8, 0, 0), std::nullopt, o, rng);
+    std::set<uint64_t> wanted, got;
+    for (int v : cl.views) wanted.insert(views[size_t(v)].targets.begin(), views[size_t(v)].targets.end());
+    for (const auto& v : tour) {
+      got.insert(v.targets.begin(), v.targets.end());
+      const auto* g = b.map.find(v.ground_key);
+      for (uint64_t t : v.targets) {
+        const auto* target = b.map.find(t);
+        if (!target->facade()) continue;
+        const bool its_own = std::any_of(views.begin(), views.end(), [&](const TaskView& w) {
+          return w.key == t && w.ground_key == v.ground_key;
+        });
+        const Eigen::Vector3d sensor = g->center + g->normal.normalized() * o.sensor_height_m;
+        const ViewGeometry geo = view_geometry(sensor, g->normal, target->center, target->normal);
+        if (its_own) ++own;
+        else {
+          ++shared;
+          EXPECT_TRUE(angles_ok(geo, o, o.shared_view_margin_deg)) << "target " << t;
+        }
+      }
+    }
+    EXPECT_EQ(got, wanted) << "cluster " << cl.id;
+  }
+  EXPECT_GT(shared, 0);
 }
 
 // Once a target stayed incomplete when observed from a spot, neither MNSS nor the route's

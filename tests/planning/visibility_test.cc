@@ -18,19 +18,20 @@ ViewGeometry level_view(double incidence_deg) {
 }
 
 TEST(AnglesOk, TheMarginNarrowsBothAngleLimits) {
-  PlannerOptions o;  // gamma_th 45, theta [-45, 45], no margin
-  EXPECT_TRUE(angles_ok(level_view(40.0), o));
-  EXPECT_FALSE(angles_ok(level_view(46.0), o));
-  o.angle_margin_deg = 15.0;
-  EXPECT_FALSE(angles_ok(level_view(40.0), o));
-  EXPECT_TRUE(angles_ok(level_view(25.0), o));
+  const PlannerOptions o;  // gamma_th 45, theta [-45, 45]
+  double margin = 0.0;
+  EXPECT_TRUE(angles_ok(level_view(40.0), o, margin));
+  EXPECT_FALSE(angles_ok(level_view(46.0), o, margin));
+  margin = 15.0;
+  EXPECT_FALSE(angles_ok(level_view(40.0), o, margin));
+  EXPECT_TRUE(angles_ok(level_view(25.0), o, margin));
   // Elevation: a target 35 deg above the sensor, facing it, passes 45 but not 45 - 15.
   const Eigen::Vector3d target(0, 10, 1.0 + 10.0 * std::tan(35.0 * kDegToRad));
   const ViewGeometry up =
       view_geometry({0, 0, 1}, Eigen::Vector3d::UnitZ(), target, Eigen::Vector3d(0, -1, -std::tan(35.0 * kDegToRad)).normalized());
-  EXPECT_FALSE(angles_ok(up, o));
-  o.angle_margin_deg = 0.0;
-  EXPECT_TRUE(angles_ok(up, o));
+  EXPECT_FALSE(angles_ok(up, o, margin));
+  margin = 0.0;
+  EXPECT_TRUE(angles_ok(up, o, margin));
 }
 
 TEST(AnglesOk, AMarginThatLeavesNoRoomIsAConfigError) {
@@ -42,7 +43,7 @@ robots:
     species: SLUGCAT
     start: [0, 0, 0]
 params:
-  view_angle_margin_deg: )";
+  shared_view_angle_margin_deg: )";
   EXPECT_NO_THROW(core::parse_team_config(team + "15", "margin 15"));
   EXPECT_THROW(core::parse_team_config(team + "45", "margin 45"), std::exception);
   EXPECT_THROW(core::parse_team_config(team + "-1", "margin -1"), std::exception);
