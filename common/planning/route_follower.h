@@ -1,10 +1,10 @@
 #pragma once
 // Executes one robot's exploration route the way the cost model assumes (paper eq.
 // 4-xx-delta charges 1 / observation speed per facade task view, and a task view is one
-// target): drive to the next view along its executable path, stop there and observe each of
-// its open facade targets for the species' observation time (the gimbal of a long-range LiDAR
-// aims at them one after the other, moving on early when the target aimed at is complete;
-// fixed sensors observe them all at once for the sum of their times), then move on. A ground view is done on arrival ("observed once a robot reaches its
+// target): drive to the next view along its executable path, stop there and observe its open
+// facade targets for the species' observation time, once per view or once per target
+// (FollowerOptions::Dwell; the gimbal of a long-range LiDAR aims at them one after the other,
+// moving on early when the target aimed at is complete), then move on. A ground view is done on arrival ("observed once a robot reaches its
 // centre"). Views whose targets are all complete (or given up) by the time the robot gets
 // there are passed by, and a dwell ends as soon as its targets are complete. Whether the
 // targets got complete is judged a settle time later, when the map has caught up with the
