@@ -140,9 +140,9 @@ std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector
   track_progress(now_s, position, state);
 
   if (observing_) {
-    // Each aim lasts its target's observation time, and ends early once that target is
-    // complete (or given up): a look at one target often completes the next ones too, whose
-    // aims are then passed over. The dwell is over when the aims are, or as soon as every
+    // Each aim lasts its time (plan_aims: the target's observation time, or its share of the
+    // view's) and ends early once its target is complete (or given up): a look at one target
+    // often completes the next ones too, whose aims are then passed over. The dwell is over when the aims are, or as soon as every
     // target it is for is complete (the map lags the scans by about a settle time, so this
     // never cuts a dwell short by more).
     const size_t was = aim_index_;
