@@ -92,6 +92,7 @@ void PlanningService::setup(service::ServiceContext& context) {
   follow.blocked_s = parse_positive(args, "blocked-s", follow.blocked_s);
   follow.stuck_s = parse_positive(args, "stuck-s", follow.stuck_s);
   follow.settle_s = parse_positive(args, "settle-s", follow.settle_s);
+  follow.min_aim_s = parse_positive(args, "min-aim-s", follow.min_aim_s);
   follow.keep_stretch_m = parse_positive(args, "keep-stretch-m", follow.keep_stretch_m);
   follow.switch_gain_m = parse_positive(args, "switch-gain-m", follow.switch_gain_m);
   follow.record_judgements = trace_.is_open();
