@@ -17,14 +17,19 @@ namespace topics = transport::topics;
 
 Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
+// Where a driver's pose, `age_s` old, puts the teammate now (along its velocity).
+Eigen::Vector3d position_now(const v1::RobotPose& pose, double age_s) {
+  return radio::extrapolate_pose(vec(pose.pose().position_m()), vec(pose.velocity_mps()), age_s,
+                                 radio::PoseScheduleOptions{}.max_extrapolation_s);
+}
+
 // A teammate heard only through its driver's pose (its safety service is silent): moving along
-// its velocity from where the pose, `age_s` old, puts it now, or standing still.
+// its velocity from where the pose puts it now, or standing still.
 Fragment fragment_from_pose(const std::string& id, const v1::RobotPose& pose, const Eigen::Vector3d& half_extents,
                             double age_s, double eta_p_m) {
   Fragment f;
   f.robot_id = id;
-  f.position_m = radio::extrapolate_pose(vec(pose.pose().position_m()), vec(pose.velocity_mps()), age_s,
-                                         radio::PoseScheduleOptions{}.max_extrapolation_s);
+  f.position_m = position_now(pose, age_s);
   Eigen::Vector3d v = vec(pose.velocity_mps());
   v.z() = 0.0;
   const double speed = v.norm();
@@ -245,9 +250,7 @@ std::vector<Fragment> SafetyService::peers() const {
         // Its driver has spoken since: the body is where the pose puts it (a stop decided a
         // moment ago still rolls on until the driver hears it; a fragment predicts, a pose
         // measures). Between the two it may be anywhere, so the trail joins them.
-        const Fragment measured = fragment_from_pose(id, *peer.pose, half_extents_of(id),
-                                                     age_s(peer.pose_ns, peer.pose_sim_ns), resolver_->options().eta_p_m);
-        move_to_measured(f, measured.position_m);
+        move_to_measured(f, position_now(*peer.pose, age_s(peer.pose_ns, peer.pose_sim_ns)));
       }
       out.push_back(std::move(f));
     } else if (peer.pose) {
