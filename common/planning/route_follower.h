@@ -4,8 +4,8 @@
 // target): drive to the next view along its executable path, stop there and observe its open
 // facade targets for the species' observation time, once per view or once per target
 // (FollowerOptions::Dwell; the gimbal of a long-range LiDAR aims at them one after the other,
-// moving on early when the target aimed at is complete), then move on. A ground view is done on arrival ("observed once a robot reaches its
-// centre"). Views whose targets are all complete (or given up) by the time the robot gets
+// moving on early when the target aimed at is complete), then move on. A ground view is done
+// on arrival ("observed once a robot reaches its centre"). Views whose targets are all complete (or given up) by the time the robot gets
 // there are passed by, and a dwell ends as soon as its targets are complete. Whether the
 // targets got complete is judged a settle time later, when the map has caught up with the
 // scans, and what stayed incomplete counts as an attempt in the team's GiveUpLedger.
