@@ -50,7 +50,6 @@ std::string round_trace_json(const RoundTrace& round, const PlanRequest& req, co
     << ", \"cut_off\": " << f.views_cut_off
     << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
     << ", \"legs_kept\": " << f.legs_kept << ", \"legs_switched\": " << f.legs_switched << ", \"stretch_views_kept\": " << f.stretch_views_kept << ", \"passing_observations\": " << round.passing_observations
-    << ", \"passing_aims\": " << round.passing_aims
     << ", \"observing_s\": " << f.observing_s << ", \"targets_judged\": " << f.targets_judged
     << ", \"targets_complete_when_judged\": " << f.targets_complete_when_judged << ", \"next\": [";
   for (size_t i = 0; i < round.follower_next.size(); ++i) j << (i ? ", " : "") << vec(round.follower_next[i]);

@@ -27,7 +27,6 @@ struct RoundTrace {
   double odometry_m = 0.0;
   size_t given_up = 0;              // targets the team gave up on
   uint64_t passing_observations = 0;
-  uint64_t passing_aims = 0;        // targets a gimbal looked at on the way (PassingAim)
   std::vector<Eigen::Vector3d> follower_next;  // the follower's next views after it merged the round's route
   std::vector<TargetJudgement> judged;         // targets the follower judged since the last round
 };

@@ -64,22 +64,6 @@ ExecutionOptions execution_options(const Arguments& args, const core::SpeciesCon
   out.passing.settle_s = follow.settle_s;
   out.passing.spot_m = rules.distinct_m;
   out.passing.ground_reach_m = follow.reach_m;
-
-  // On the way, a gimbal aims at the first target ahead on the route it sees from where the
-  // robot is (planning::PassingAim); off, at the first target of the view being driven to.
-  bool passing_aim = follow.aim_each_target;
-  if (auto it = args.find("passing-aim"); it != args.end()) {
-    if (it->second == "off") passing_aim = false;
-    else if (it->second != "on")
-      throw std::invalid_argument("planning: --passing-aim expects on or off, got '" + it->second + "'");
-  }
-  if (passing_aim && follow.aim_each_target) {
-    planning::PassingAimOptions aim;
-    aim.range_m = capability.observation_range_m;
-    aim.budget_s = std::max(follow.min_aim_s, follow.observation_time_s);
-    aim.hold_s = parse_positive(args, "passing-aim-hold-s", aim.hold_s);
-    out.passing_aim = aim;
-  }
   return out;
 }
 

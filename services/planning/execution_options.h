@@ -4,13 +4,11 @@
 // passing. Each throws std::invalid_argument naming the bad option.
 
 #include <map>
-#include <optional>
 #include <string>
 
 #include "common/core/team_config.h"
 #include "common/planning/capabilities.h"
 #include "common/planning/give_up_ledger.h"
-#include "common/planning/passing_aim.h"
 #include "common/planning/passing_observer.h"
 #include "common/planning/route_follower.h"
 
@@ -25,8 +23,6 @@ struct ExecutionOptions {
   planning::GiveUpRules give_up;
   planning::FollowerOptions follow;
   planning::PassingOptions passing;
-  // Where a gimbal LiDAR looks on the way (--passing-aim on|off; only species with a gimbal).
-  std::optional<planning::PassingAimOptions> passing_aim;
 };
 
 // `capability`: the species' entry in the team's capabilities; `planner`: the round's options

@@ -79,7 +79,6 @@ void PlanningService::setup(service::ServiceContext& context) {
   ledger_ = planning::GiveUpLedger(exec.give_up);
   follower_ = std::make_unique<planning::RouteFollower>(exec.follow, species_index_);
   passing_ = std::make_unique<planning::PassingObserver>(exec.passing, options_);
-  if (exec.passing_aim) passing_aim_ = std::make_unique<planning::PassingAim>(*exec.passing_aim, options_);
   peer_stuck_s_ = parse_positive(args, "peer-stuck-s", 30.0);
 
   auto& m = context.metrics();
@@ -192,7 +191,6 @@ bool PlanningService::switch_planner(const std::string& name) {
     if (switches_) switches_->add({{"robot", robot_id_}, {"planner", name}})->increment();
     core::LogLine(core::LogLevel::kInfo, "planning") << robot_id_ << ": planner switched from " << previous << " to " << name;
     follower_->clear();  // plan again with the new planner at the next cycle
-    last_order_.reset();
   }
   return true;
 }
@@ -296,40 +294,19 @@ planning::DriveState PlanningService::drive_state() const {
 
 void PlanningService::follow_route() {
   const double now_s = core::ns_to_s(now_ns());
-  const Eigen::Vector3d& position = positions_.at(robot_id_);
-  const bool look = now_s - last_look_s_ >= 1.0;
-  if (look) {
+  if (now_s - last_look_s_ >= 1.0) {
     last_look_s_ = now_s;
-    passing_->step(now_s, position, *map_, ledger_);
+    passing_->step(now_s, positions_.at(robot_id_), *map_, ledger_);
   }
-  const auto order = follower_->step(now_s, position, drive_state(), *map_, avoided_vertices(), ledger_);
-  if (order) {
-    last_order_ = *order;
-    core::LogLine(core::LogLevel::kDebug, "planning")
-        << robot_id_ << ": at (" << position.head<2>().transpose() << ") "
-        << (order->observing ? "observing, aim " : "path to ") << "(" << order->path.goal.position.head<2>().transpose()
-        << "), " << order->path.waypoints.size() << " waypoints";
-  }
-  if (!last_order_) return;
-  // On the way, a gimbal looks at the first target ahead on the route that it sees from here
-  // (planning::PassingAim), else at the goal's target; a new aim re-sends the path being driven.
-  Eigen::Vector3d look_at = last_order_->path.goal.look_at;
-  if (passing_aim_ && last_order_->observing) passing_aim_->pause();
-  if (passing_aim_ && !last_order_->observing) {
-    if (look) {
-      std::vector<uint64_t> ahead;
-      for (const planning::TaskView& v : follower_->views_ahead())
-        if (v.facade) ahead.insert(ahead.end(), v.targets.begin(), v.targets.end());
-      passing_aim_look_ = passing_aim_->step(now_s, position, *map_, ledger_, ahead);
-    }
-    if (passing_aim_look_) look_at = *passing_aim_look_;
-  }
-  if (!order && look_at == sent_look_at_) return;
-  sent_look_at_ = look_at;
-  planning::ExecutablePlan plan = last_order_->path;
-  plan.goal.look_at = look_at;
-  v1::ExecutablePath path = planning::path_to_proto(round_, plan, speed_mps_);
-  path.set_observing(last_order_->observing);
+  const auto order = follower_->step(core::ns_to_s(now_ns()), positions_.at(robot_id_), drive_state(), *map_,
+                                     avoided_vertices(), ledger_);
+  if (!order) return;
+  core::LogLine(core::LogLevel::kDebug, "planning")
+      << robot_id_ << ": at (" << positions_.at(robot_id_).head<2>().transpose() << ") "
+      << (order->observing ? "observing, aim " : "path to ") << "(" << order->path.goal.position.head<2>().transpose()
+      << "), " << order->path.waypoints.size() << " waypoints";
+  v1::ExecutablePath path = planning::path_to_proto(round_, order->path, speed_mps_);
+  path.set_observing(order->observing);
   context_->publisher().publish(topics::path(robot_id_), path);
 }
 
@@ -436,7 +413,6 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
   round.odometry_m = odometry_m_;
   round.given_up = ledger_.given_up_targets().size();
   round.passing_observations = uint64_t(passing_->observations());
-  round.passing_aims = passing_aim_ ? uint64_t(passing_aim_->aims()) : 0;
   const auto ahead = follower_->views_ahead();
   for (const auto& v : ahead.first(std::min<size_t>(3, ahead.size()))) round.follower_next.push_back(v.position);
   round.judged = follower_->take_judgements();

@@ -26,7 +26,6 @@
 
 #include "common/highlevel/high_level_map.h"
 #include "common/planning/give_up_ledger.h"
-#include "common/planning/passing_aim.h"
 #include "common/planning/passing_observer.h"
 #include "common/planning/planner_registry.h"
 #include "common/planning/route_follower.h"
@@ -100,10 +99,6 @@ class PlanningService : public service::Service {
   planning::GiveUpLedger ledger_;                     // targets given up by us and the team
   std::unique_ptr<planning::RouteFollower> follower_;  // executes our route
   std::unique_ptr<planning::PassingObserver> passing_;  // what we see on the way counts too
-  std::unique_ptr<planning::PassingAim> passing_aim_;   // where a gimbal looks on the way (or null)
-  std::optional<planning::MotionOrder> last_order_;      // the follower's last order
-  std::optional<Eigen::Vector3d> passing_aim_look_;      // the passing aim's last choice
-  Eigen::Vector3d sent_look_at_ = Eigen::Vector3d::Zero();  // look_at of the last path sent
   double last_look_s_ = -1.0;
   int species_index_ = 0;
   int own_motion_ = 0;                                // our last v1::MotionState
