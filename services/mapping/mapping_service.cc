@@ -1,7 +1,6 @@
 #include "services/mapping/mapping_service.h"
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -10,6 +9,7 @@
 #include "common/core/config_error.h"
 #include "common/core/log.h"
 #include "common/radio/pose_schedule.h"
+#include "common/service/options.h"
 #include "common/perception/voxel_proto.h"
 #include "common/transport/topics.h"
 
@@ -17,24 +17,6 @@ namespace hexplore::mapping {
 namespace {
 
 namespace topics = transport::topics;
-
-double parse_double(const std::map<std::string, std::string>& args, const std::string& name, double fallback,
-                    double min_value) {
-  const auto it = args.find(name);
-  if (it == args.end()) return fallback;
-  size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(it->second, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != it->second.size() || !std::isfinite(value) || value < min_value) {
-    throw std::invalid_argument("mapping: --" + name + " expects a number >= " + std::to_string(min_value) + ", got '" +
-                                it->second + "'");
-  }
-  return value;
-}
 
 std::chrono::nanoseconds seconds(double s) {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(s));
@@ -45,14 +27,15 @@ Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 }  // namespace
 
 MappingOptions MappingOptions::from_arguments(const std::map<std::string, std::string>& args) {
+  const service::Options opts(args);
   MappingOptions o;
-  o.publish_period_s = parse_double(args, "publish-period-s", o.publish_period_s, 0.001);
-  o.full_snapshot_period_s = parse_double(args, "full-snapshot-period-s", o.full_snapshot_period_s, 0.0);
-  o.save_period_s = parse_double(args, "save-period-s", o.save_period_s, 0.0);
-  o.max_pose_jump_m = parse_double(args, "max-pose-jump-m", o.max_pose_jump_m, 0.0);
-  o.reanchor_after = static_cast<int>(parse_double(args, "reanchor-after", o.reanchor_after, 1.0));
-  o.teammate_timeout_s = parse_double(args, "teammate-timeout-s", o.teammate_timeout_s, 0.0);
-  if (const auto it = args.find("map-file"); it != args.end()) o.map_file = it->second;
+  o.publish_period_s = opts.number("publish-period-s", o.publish_period_s, 0.001);
+  o.full_snapshot_period_s = opts.number("full-snapshot-period-s", o.full_snapshot_period_s, 0.0);
+  o.save_period_s = opts.number("save-period-s", o.save_period_s, 0.0);
+  o.max_pose_jump_m = opts.number("max-pose-jump-m", o.max_pose_jump_m, 0.0);
+  o.reanchor_after = opts.integer("reanchor-after", o.reanchor_after, 1);
+  o.teammate_timeout_s = opts.number("teammate-timeout-s", o.teammate_timeout_s, 0.0);
+  o.map_file = opts.text("map-file", o.map_file);
   return o;
 }
 

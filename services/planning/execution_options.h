@@ -1,23 +1,16 @@
 #pragma once
 // How this robot executes its routes, read from the planning service's command line and its
 // species: the give-up rules, the route follower's options and what counts as observed in
-// passing. Each throws std::invalid_argument naming the bad option.
-
-#include <map>
-#include <string>
+// passing. A bad value throws service::OptionError naming the option.
 
 #include "common/core/team_config.h"
 #include "common/planning/capabilities.h"
 #include "common/planning/give_up_ledger.h"
 #include "common/planning/passing_observer.h"
 #include "common/planning/route_follower.h"
+#include "common/service/options.h"
 
 namespace hexplore::planning_service {
-
-using Arguments = std::map<std::string, std::string>;
-
-// --KEY as a positive number, or `fallback` when absent.
-double parse_positive(const Arguments& args, const std::string& key, double fallback);
 
 struct ExecutionOptions {
   planning::GiveUpRules give_up;
@@ -27,7 +20,7 @@ struct ExecutionOptions {
 
 // `capability`: the species' entry in the team's capabilities; `planner`: the round's options
 // (its observation-angle bounds limit what is seen in passing).
-ExecutionOptions execution_options(const Arguments& args, const core::SpeciesConfig& species,
+ExecutionOptions execution_options(const service::Options& opts, const core::SpeciesConfig& species,
                                    const planning::SpeciesCapability& capability,
                                    const planning::PlannerOptions& planner);
 

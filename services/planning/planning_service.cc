@@ -56,30 +56,26 @@ void PlanningService::setup(service::ServiceContext& context) {
     heard_ns_[r.id] = context.now_ns();  // a teammate gets peer_timeout_s to show up
   }
 
-  const auto& args = context.arguments();
-  if (auto it = args.find("trace-dir"); it != args.end()) {
-    const std::string path = it->second + "/planning-" + robot_id_ + ".jsonl";
+  const service::Options opts(context.arguments());
+  if (const std::string dir = opts.text("trace-dir"); !dir.empty()) {
+    const std::string path = dir + "/planning-" + robot_id_ + ".jsonl";
     std::error_code ignored;  // a failure shows as the open below failing
-    std::filesystem::create_directories(it->second, ignored);
+    std::filesystem::create_directories(dir, ignored);
     trace_.open(path);
-    if (!trace_) throw std::invalid_argument("planning: --trace-dir: cannot write " + path);
+    if (!trace_) throw service::OptionError("trace-dir", "cannot write " + path);
   }
-  if (auto it = args.find("wait-for-start"); it != args.end()) {
-    if (it->second == "true") mission_active_ = false;
-    else if (it->second != "false")
-      throw std::invalid_argument("planning: --wait-for-start expects true or false, got '" + it->second + "'");
-  }
-  const double cycle_ms = parse_positive(args, "cycle-ms", 200.0);
-  min_replan_s_ = parse_positive(args, "min-replan-s", 1.0);
-  peer_timeout_s_ = parse_positive(args, "peer-timeout-s", 5.0);
+  mission_active_ = !opts.flag("wait-for-start", false);
+  const double cycle_ms = opts.positive("cycle-ms", 200.0);
+  min_replan_s_ = opts.positive("min-replan-s", 1.0);
+  peer_timeout_s_ = opts.positive("peer-timeout-s", 5.0);
   species_index_ = team.species_index(species->name).value_or(0);
   ExecutionOptions exec =
-      execution_options(args, *species, capabilities_.species[size_t(species_index_)], options_);
+      execution_options(opts, *species, capabilities_.species[size_t(species_index_)], options_);
   exec.follow.record_judgements = trace_.is_open();
   ledger_ = planning::GiveUpLedger(exec.give_up);
   follower_ = std::make_unique<planning::RouteFollower>(exec.follow, species_index_);
   passing_ = std::make_unique<planning::PassingObserver>(exec.passing, options_);
-  peer_stuck_s_ = parse_positive(args, "peer-stuck-s", 30.0);
+  peer_stuck_s_ = opts.positive("peer-stuck-s", 30.0);
 
   auto& m = context.metrics();
   labels_ = {{"robot", robot_id_}};

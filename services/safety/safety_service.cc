@@ -1,12 +1,12 @@
 #include "services/safety/safety_service.h"
 
 #include <chrono>
-#include <stdexcept>
 
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
 #include "common/core/log.h"
 #include "common/radio/pose_schedule.h"
+#include "common/service/options.h"
 #include "common/transport/topics.h"
 #include "services/safety/fragment_proto.h"
 
@@ -74,19 +74,11 @@ void SafetyService::setup(service::ServiceContext& context) {
   sharing_ = FragmentSchedule(sharing);
   peer_timeout_s_ = std::max(peer_timeout_s_, 2.0 * sharing.heartbeat_s + 0.5);
 
-  const auto& args = context.arguments();
-  if (auto it = args.find("decision-clock"); it != args.end()) {
-    if (it->second != "sim" && it->second != "wall")
-      throw std::invalid_argument("safety: --decision-clock expects sim or wall, got '" + it->second + "'");
-    sim_clock_ = it->second == "sim";
-  }
-  if (auto it = args.find("wait-for-start"); it != args.end()) {
-    if (it->second == "true") {
-      mission_ = Mission::kStopped;
-      mission_reason_ = "waiting for mission start";
-    } else if (it->second != "false") {
-      throw std::invalid_argument("safety: --wait-for-start expects true or false, got '" + it->second + "'");
-    }
+  const service::Options opts(context.arguments());
+  sim_clock_ = opts.choice("decision-clock", sim_clock_ ? "sim" : "wall", {"sim", "wall"}) == "sim";
+  if (opts.flag("wait-for-start", false)) {
+    mission_ = Mission::kStopped;
+    mission_reason_ = "waiting for mission start";
   }
 
   auto& m = context.metrics();

@@ -10,6 +10,7 @@
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
 #include "common/core/log.h"
+#include "common/service/options.h"
 #include "common/sim/mesh_io.h"
 #include "common/sim/rng.h"
 #include "common/sim/scene_error.h"
@@ -37,25 +38,6 @@ void set_pose(v1::Pose* out, const Eigen::Isometry3d& pose) {
   out->mutable_orientation()->set_x(q.x());
   out->mutable_orientation()->set_y(q.y());
   out->mutable_orientation()->set_z(q.z());
-}
-
-double number_option(const service::ServiceContext& context, const std::string& name, double fallback, double min,
-                     double max) {
-  const auto& args = context.arguments();
-  const auto it = args.find(name);
-  if (it == args.end()) return fallback;
-  double v = 0;
-  try {
-    size_t used = 0;
-    v = std::stod(it->second, &used);
-    if (used != it->second.size()) throw std::invalid_argument(it->second);
-  } catch (const std::exception&) {
-    throw core::ConfigError("command line", "--" + name, "expects a number, got '" + it->second + "'");
-  }
-  if (!(v >= min && v <= max))
-    throw core::ConfigError("command line", "--" + name,
-                            "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
-  return v;
 }
 
 }  // namespace
@@ -86,13 +68,12 @@ v1::ScanFrame to_scan_frame(const LidarScan& scan, const Eigen::Isometry3d& body
 
 void SimService::load_world(service::ServiceContext& context) {
   const auto& team = context.team();
-  const auto& args = context.arguments();
   scene_ = load_team_scene(team);
   const std::string& scene = scene_.name;  // the resolved name or path
   caster_ = std::make_unique<RayCaster>(scene_.mesh);
-  if (auto it = args.find("scene-dir"); it != args.end() && is_builtin_scene(scene)) {
-    std::filesystem::create_directories(it->second);
-    const auto path = std::filesystem::path(it->second) / (scene + "_seed" + std::to_string(team.params.seed) + ".ply");
+  if (const std::string dir = service::Options(context.arguments()).text("scene-dir"); !dir.empty() && is_builtin_scene(scene)) {
+    std::filesystem::create_directories(dir);
+    const auto path = std::filesystem::path(dir) / (scene + "_seed" + std::to_string(team.params.seed) + ".ply");
     write_mesh(scene_.mesh, path.string());
   }
 }
@@ -104,9 +85,10 @@ void SimService::setup(service::ServiceContext& context) {
   const core::SpeciesConfig* species = context.species();
   if (!robot || !species) throw core::ConfigError(context.team().source_file, "robots", "sim needs a robot of the team");
 
-  const double rtf = number_option(context, "real-time-factor", 1.0, 0.01, 100.0);
-  const double step_hz = number_option(context, "step-hz", 20.0, 1.0, 1000.0);
-  const double scan_hz = number_option(context, "scan-hz", 2.0, 0.01, 100.0);
+  const service::Options opts(context.arguments());
+  const double rtf = opts.number("real-time-factor", 1.0, 0.01, 100.0);
+  const double step_hz = opts.number("step-hz", 20.0, 1.0, 1000.0);
+  const double scan_hz = opts.number("scan-hz", 2.0, 0.01, 100.0);
   clock_ = SimClock(rtf);
   step_ns_ = static_cast<int64_t>(1e9 / step_hz);
   scan_period_ns_ = static_cast<int64_t>(1e9 / scan_hz);

@@ -6,9 +6,9 @@
 
 #include "common/core/clock.h"
 #include "common/core/coverage_gap.h"
-#include "common/core/config_error.h"
 #include "common/core/endpoints.h"
 #include "common/core/log.h"
+#include "common/service/options.h"
 #include "common/station/results_writer.h"
 #include "common/transport/topics.h"
 #include "hexplore/v1/hlmap.pb.h"
@@ -24,27 +24,6 @@ using namespace std::chrono_literals;
 constexpr auto kTick = 250ms;
 constexpr auto kSnapshotTimeout = 5000ms;
 constexpr double kFinalSnapshotWaitS = 8.0;
-
-double parse_double(const std::map<std::string, std::string>& args, const std::string& name, double fallback) {
-  const auto it = args.find(name);
-  if (it == args.end()) return fallback;
-  try {
-    size_t used = 0;
-    const double v = std::stod(it->second, &used);
-    if (used != it->second.size() || !std::isfinite(v) || v < 0) throw std::invalid_argument(name);
-    return v;
-  } catch (const std::exception&) {
-    throw core::ConfigError("<command line>", "--" + name, "expected a non-negative number, got '" + it->second + "'");
-  }
-}
-
-bool parse_bool(const std::map<std::string, std::string>& args, const std::string& name, bool fallback) {
-  const auto it = args.find(name);
-  if (it == args.end()) return fallback;
-  if (it->second == "true" || it->second == "1" || it->second == "yes") return true;
-  if (it->second == "false" || it->second == "0" || it->second == "no") return false;
-  throw core::ConfigError("<command line>", "--" + name, "expected true or false, got '" + it->second + "'");
-}
 
 // "OPEN_TARGET_HAS_VIEW" -> "has_view".
 std::string lowercase_after_prefix(const std::string& name, const std::string& prefix) {
@@ -95,15 +74,16 @@ void StationGauges::on_tick(double mission_time_s, size_t robots_heard, bool sta
 }
 
 StationOptions StationOptions::from_arguments(const std::map<std::string, std::string>& args) {
+  const service::Options opts(args);
   StationOptions o;
-  if (auto it = args.find("results"); it != args.end()) o.results_dir = it->second;
-  o.snapshot_period_s = parse_double(args, "snapshot-period-s", o.snapshot_period_s);
-  o.start_wait_s = parse_double(args, "start-wait-s", o.start_wait_s);
-  o.settle_s = parse_double(args, "settle-s", o.settle_s);
-  o.progress_period_s = parse_double(args, "progress-period-s", o.progress_period_s);
-  o.open_targets_period_s = parse_double(args, "open-targets-period-s", o.open_targets_period_s);
-  o.autostart = parse_bool(args, "autostart", o.autostart);
-  o.observable = parse_bool(args, "observable", o.observable);
+  o.results_dir = opts.text("results", o.results_dir);
+  o.snapshot_period_s = opts.number("snapshot-period-s", o.snapshot_period_s, 0.0);
+  o.start_wait_s = opts.number("start-wait-s", o.start_wait_s, 0.0);
+  o.settle_s = opts.number("settle-s", o.settle_s, 0.0);
+  o.progress_period_s = opts.number("progress-period-s", o.progress_period_s, 0.0);
+  o.open_targets_period_s = opts.number("open-targets-period-s", o.open_targets_period_s, 0.0);
+  o.autostart = opts.flag("autostart", o.autostart);
+  o.observable = opts.flag("observable", o.observable);
   return o;
 }
 

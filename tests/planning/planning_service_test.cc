@@ -15,6 +15,7 @@
 #include "common/core/team_config.h"
 #include "common/highlevel/proto_convert.h"
 #include "common/planning/synthetic_scene.h"
+#include "common/service/options.h"
 #include "common/service/service.h"
 #include "common/transport/publisher.h"
 #include "common/transport/request_reply.h"
@@ -228,6 +229,26 @@ TEST_F(SilentTeammateTest, PathsKeepOffASilentTeammate) {
                        core::builtin_mr1000().body_half_extents_m.head<2>().norm();
   for (const auto& p : after.waypoints_m())
     EXPECT_GE((Eigen::Vector3d(p.x(), p.y(), 0) - at).norm(), reach - 1e-6) << p.x() << ", " << p.y();
+}
+
+// A bad option stops the service before it starts, with an error naming the flag (the process
+// then exits with 2 and says which flag and why).
+TEST(PlanningServiceOptions, ABadOptionIsAnErrorNamingTheFlag) {
+  for (const auto& [key, value] : std::map<std::string, std::string>{
+           {"dwell", "sideways"}, {"give-up-views", "1.5"}, {"cycle-ms", "0"}, {"wait-for-start", "maybe"}}) {
+    service::HostOptions options;
+    options.compose = true;
+    options.metrics_port = 0;
+    options.arguments = {{key, value}};
+    service::ServiceHost host(core::parse_team_config(kTeam, "test team"), options);
+    host.add(std::make_unique<PlanningService>(), "r1");
+    try {
+      host.start();
+      ADD_FAILURE() << "--" << key << " " << value << " was accepted";
+    } catch (const service::OptionError& e) {
+      EXPECT_EQ(e.key(), "--" + key);
+    }
+  }
 }
 
 }  // namespace
