@@ -7,6 +7,7 @@
 #include "common/core/config_error.h"
 #include "common/core/log.h"
 #include "common/highlevel/proto_convert.h"
+#include "common/service/status_values.h"
 #include "common/transport/payload_wire.h"
 #include "common/transport/topics.h"
 
@@ -248,11 +249,7 @@ void HlmapService::count_full_map(bool changed) {
 }
 
 void HlmapService::fill_status(v1::ServiceStatus& status) {
-  auto add = [&](const char* name, double value) {
-    v1::StatusValue* v = status.add_values();
-    v->set_name(name);
-    v->set_value(value);
-  };
+  const service::StatusValues add(status);
   const auto& map = fusion_->map();
   add("supervoxels", static_cast<double>(map.size()));
   add("edges", static_cast<double>(map.edges().size()));

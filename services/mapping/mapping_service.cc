@@ -8,9 +8,10 @@
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
 #include "common/core/log.h"
+#include "common/perception/voxel_proto.h"
 #include "common/radio/pose_schedule.h"
 #include "common/service/options.h"
-#include "common/perception/voxel_proto.h"
+#include "common/service/status_values.h"
 #include "common/transport/topics.h"
 
 namespace hexplore::mapping {
@@ -129,11 +130,7 @@ void MappingService::on_shutdown(service::ServiceContext&) {
 }
 
 void MappingService::fill_status(v1::ServiceStatus& status) {
-  auto add = [&](const char* name, double value) {
-    auto* v = status.add_values();
-    v->set_name(name);
-    v->set_value(value);
-  };
+  const service::StatusValues add(status);
   add("voxels", map_ ? static_cast<double>(map_->voxel_count()) : 0.0);
   add("scans_integrated", static_cast<double>(scans_integrated_));
   add("scans_rejected", static_cast<double>(scans_rejected_));

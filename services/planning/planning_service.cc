@@ -19,6 +19,7 @@
 #include "common/planning/round_inputs.h"
 #include "common/planning/round_trace.h"
 #include "common/radio/as_received.h"
+#include "common/service/status_values.h"
 #include "common/transport/topics.h"
 #include "services/planning/execution_options.h"
 
@@ -432,11 +433,7 @@ v1::OpenTargetsReport PlanningService::open_targets_report() const {
 
 void PlanningService::fill_status(v1::ServiceStatus& status) {
   status.set_detail("planner " + active_name_);
-  auto add = [&](const char* name, double v) {
-    auto* value = status.add_values();
-    value->set_name(name);
-    value->set_value(v);
-  };
+  const service::StatusValues add(status);
   add("round", double(round_));
   // The station's mission monitor and recorder read these two (common/station/team_recorder.h).
   if (round_ > 0) {

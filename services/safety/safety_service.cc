@@ -7,6 +7,7 @@
 #include "common/core/log.h"
 #include "common/radio/pose_schedule.h"
 #include "common/service/options.h"
+#include "common/service/status_values.h"
 #include "common/transport/topics.h"
 #include "services/safety/fragment_proto.h"
 
@@ -330,11 +331,7 @@ void SafetyService::share_fragment() {
 
 void SafetyService::fill_status(v1::ServiceStatus& status) {
   const ResolverCounters& c = resolver_ ? resolver_->counters() : ResolverCounters{};
-  auto add = [&](const char* name, double value) {
-    auto* v = status.add_values();
-    v->set_name(name);
-    v->set_value(value);
-  };
+  const service::StatusValues add(status);
   add("conflicts", static_cast<double>(c.conflicts_detected));
   add("yields", static_cast<double>(c.yields));
   add("detours", static_cast<double>(c.detours));

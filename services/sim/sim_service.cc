@@ -11,6 +11,7 @@
 #include "common/core/config_error.h"
 #include "common/core/log.h"
 #include "common/service/options.h"
+#include "common/service/status_values.h"
 #include "common/sim/mesh_io.h"
 #include "common/sim/rng.h"
 #include "common/sim/scene_error.h"
@@ -307,11 +308,7 @@ void SimService::publish_pose() {
 
 void SimService::fill_status(v1::ServiceStatus& status) {
   if (!motion_) return;
-  auto add = [&](const char* name, double value) {
-    auto* v = status.add_values();
-    v->set_name(name);
-    v->set_value(value);
-  };
+  const service::StatusValues add(status);
   add("sim_time_s", core::ns_to_s(clock_.now_ns()));
   add("odometry_m", motion_->odometry_m());
   add("collisions", motion_->collisions());

@@ -9,6 +9,7 @@
 #include "common/core/endpoints.h"
 #include "common/core/log.h"
 #include "common/service/options.h"
+#include "common/service/status_values.h"
 #include "common/station/results_writer.h"
 #include "common/transport/topics.h"
 #include "hexplore/v1/hlmap.pb.h"
@@ -300,11 +301,7 @@ void StationService::on_shutdown(service::ServiceContext& context) {
 
 void StationService::fill_status(v1::ServiceStatus& status) {
   if (!recorder_) return;
-  auto add = [&](const std::string& name, double value) {
-    auto* v = status.add_values();
-    v->set_name(name);
-    v->set_value(value);
-  };
+  const service::StatusValues add(status);
   add("mission_time_s", recorder_->mission_time_s());
   const auto& samples = recorder_->record().completeness;
   add("completeness", samples.empty() ? 0.0 : samples.back().team);
