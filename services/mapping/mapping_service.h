@@ -31,7 +31,7 @@ struct MappingOptions {
   int reanchor_after = 10;              // --reanchor-after: consistent jumped scans accepted as a relocation
   double teammate_timeout_s = 10.0;     // --teammate-timeout-s: older teammate poses are not filtered
 
-  // Throws std::invalid_argument naming the option.
+  // Throws service::OptionError naming the option.
   static MappingOptions from_arguments(const std::map<std::string, std::string>& args);
 };
 

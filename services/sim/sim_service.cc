@@ -67,14 +67,24 @@ v1::ScanFrame to_scan_frame(const LidarScan& scan, const Eigen::Isometry3d& body
   return frame;
 }
 
-void SimService::load_world(service::ServiceContext& context) {
+SimOptions SimOptions::from_arguments(const std::map<std::string, std::string>& args) {
+  const service::Options opts(args);
+  SimOptions o;
+  o.real_time_factor = opts.number("real-time-factor", o.real_time_factor, 0.01, 100.0);
+  o.step_hz = opts.number("step-hz", o.step_hz, 1.0, 1000.0);
+  o.scan_hz = opts.number("scan-hz", o.scan_hz, 0.01, 100.0);
+  o.scene_dir = opts.text("scene-dir", o.scene_dir);
+  return o;
+}
+
+void SimService::load_world(service::ServiceContext& context, const std::string& scene_dir) {
   const auto& team = context.team();
   scene_ = load_team_scene(team);
   const std::string& scene = scene_.name;  // the resolved name or path
   caster_ = std::make_unique<RayCaster>(scene_.mesh);
-  if (const std::string dir = service::Options(context.arguments()).text("scene-dir"); !dir.empty() && is_builtin_scene(scene)) {
-    std::filesystem::create_directories(dir);
-    const auto path = std::filesystem::path(dir) / (scene + "_seed" + std::to_string(team.params.seed) + ".ply");
+  if (!scene_dir.empty() && is_builtin_scene(scene)) {
+    std::filesystem::create_directories(scene_dir);
+    const auto path = std::filesystem::path(scene_dir) / (scene + "_seed" + std::to_string(team.params.seed) + ".ply");
     write_mesh(scene_.mesh, path.string());
   }
 }
@@ -86,16 +96,14 @@ void SimService::setup(service::ServiceContext& context) {
   const core::SpeciesConfig* species = context.species();
   if (!robot || !species) throw core::ConfigError(context.team().source_file, "robots", "sim needs a robot of the team");
 
-  const service::Options opts(context.arguments());
-  const double rtf = opts.number("real-time-factor", 1.0, 0.01, 100.0);
-  const double step_hz = opts.number("step-hz", 20.0, 1.0, 1000.0);
-  const double scan_hz = opts.number("scan-hz", 2.0, 0.01, 100.0);
+  const SimOptions options = SimOptions::from_arguments(context.arguments());
+  const double rtf = options.real_time_factor;
   clock_ = SimClock(rtf);
-  step_ns_ = static_cast<int64_t>(1e9 / step_hz);
-  scan_period_ns_ = static_cast<int64_t>(1e9 / scan_hz);
+  step_ns_ = static_cast<int64_t>(1e9 / options.step_hz);
+  scan_period_ns_ = static_cast<int64_t>(1e9 / options.scan_hz);
 
   try {
-    load_world(context);
+    load_world(context, options.scene_dir);
     const uint32_t index = static_cast<uint32_t>(*context.team().robot_index(robot_id_));
     motion_ = std::make_unique<RobotMotion>(*caster_, *species, robot->start_position_m,
                                             robot->start_yaw_deg * M_PI / 180.0, index + 1);

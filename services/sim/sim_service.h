@@ -7,12 +7,7 @@
 // by this robot's rays. Executes MotionCommands from its safety service and obeys mission
 // commands: stop halts, emergency stop halts at once and ignores motion until StartMission.
 // With a radio model it reports the robot's true position for the range check.
-//
-// Options (after --config/--robot):
-//   --scan-hz N            LiDAR frames per sim second, every sensor (default 2)
-//   --step-hz N            motion steps and pose messages per sim second (default 20)
-//   --real-time-factor F   sim seconds per wall second (default 1)
-//   --scene-dir DIR        write the generated scene mesh there (created on demand)
+// Its options (after --config/--robot) are SimOptions.
 
 #include <cstdint>
 #include <map>
@@ -36,6 +31,16 @@
 
 namespace hexplore::sim {
 
+struct SimOptions {
+  double scan_hz = 2.0;           // --scan-hz: LiDAR frames per sim second, every sensor
+  double step_hz = 20.0;          // --step-hz: motion steps and pose messages per sim second
+  double real_time_factor = 1.0;  // --real-time-factor: sim seconds per wall second
+  std::string scene_dir;          // --scene-dir: write the generated scene mesh there (created on demand)
+
+  // Throws service::OptionError naming the option.
+  static SimOptions from_arguments(const std::map<std::string, std::string>& args);
+};
+
 class SimService : public service::Service {
  public:
   core::ServiceKind kind() const override { return core::ServiceKind::kSim; }
@@ -54,7 +59,7 @@ class SimService : public service::Service {
     metrics::Gauge* rays_per_second = nullptr;
   };
 
-  void load_world(service::ServiceContext& context);
+  void load_world(service::ServiceContext& context, const std::string& scene_dir);
   void on_motion(const v1::MotionCommand& command);
   void on_mission(const v1::MissionCommand& command);
   void on_body(const std::string& sender, const v1::RobotPose& pose);
