@@ -65,7 +65,7 @@ void PlanningService::setup(service::ServiceContext& context) {
     trace_.open(path);
     if (!trace_) throw service::OptionError("trace-dir", "cannot write " + path);
   }
-  mission_active_ = !opts.flag("wait-for-start", false);
+  mission_ = service::MissionState(opts.flag("wait-for-start", false));
   const double cycle_ms = opts.positive("cycle-ms", 200.0);
   min_replan_s_ = opts.positive("min-replan-s", 1.0);
   peer_timeout_s_ = opts.positive("peer-timeout-s", 5.0);
@@ -223,21 +223,9 @@ void PlanningService::on_map(const v1::FusedMapUpdate& update) {
 }
 
 void PlanningService::on_mission(const v1::MissionCommand& command) {
-  if (!command.target_robot().empty() && command.target_robot() != robot_id_) return;
-  switch (command.command_case()) {
-    case v1::MissionCommand::kStart:
-      mission_active_ = true;
-      break;
-    case v1::MissionCommand::kStop:
-    case v1::MissionCommand::kEmergencyStop:
-      mission_active_ = false;
-      break;
-    case v1::MissionCommand::kSwitchPlanner:
-      switch_planner(command.switch_planner().planner());
-      break;
-    default:
-      break;
-  }
+  mission_.apply(command, robot_id_);
+  if (command.has_switch_planner() && service::addressed_to(command, robot_id_))
+    switch_planner(command.switch_planner().planner());
 }
 
 std::vector<planning::RobotState> PlanningService::team_states(int& self) const {
@@ -309,7 +297,7 @@ void PlanningService::follow_route() {
 
 void PlanningService::cycle() {
   if (!have_map_) request_snapshot();  // hlmap may have started after us, or a reply was lost
-  if (!mission_active_ || !have_map_ || !active_) return;
+  if (!mission_.active() || !have_map_ || !active_) return;
   follow_route();
   const double age_s = since_last_plan_s();
   std::string reason;

@@ -29,6 +29,7 @@
 #include "common/planning/passing_observer.h"
 #include "common/planning/planner_registry.h"
 #include "common/planning/route_follower.h"
+#include "common/service/mission_state.h"
 #include "common/service/service.h"
 #include "hexplore/v1/hlmap.pb.h"
 #include "hexplore/v1/mission.pb.h"
@@ -107,7 +108,7 @@ class PlanningService : public service::Service {
   std::ofstream trace_;                           // latest sim time from our pose
   int64_t last_plan_sim_ns_ = 0;
 
-  bool mission_active_ = true;
+  service::MissionState mission_;  // the station starts and stops our rounds
   uint64_t round_ = 0;
   size_t last_views_ = 0;             // task views of the latest round (0 = exploration done)
   double last_planning_time_s_ = 0.0;

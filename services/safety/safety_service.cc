@@ -6,6 +6,7 @@
 #include "common/core/config_error.h"
 #include "common/core/log.h"
 #include "common/radio/pose_schedule.h"
+#include "common/service/mission_state.h"
 #include "common/service/options.h"
 #include "common/service/status_values.h"
 #include "common/transport/topics.h"
@@ -77,10 +78,7 @@ void SafetyService::setup(service::ServiceContext& context) {
 
   const service::Options opts(context.arguments());
   sim_clock_ = opts.choice("decision-clock", sim_clock_ ? "sim" : "wall", {"sim", "wall"}) == "sim";
-  if (opts.flag("wait-for-start", false)) {
-    mission_ = Mission::kStopped;
-    mission_reason_ = "waiting for mission start";
-  }
+  mission_ = service::MissionState(opts.flag("wait-for-start", false));
 
   auto& m = context.metrics();
   const metrics::Labels labels{{"robot", robot_id_}};
@@ -140,7 +138,7 @@ void SafetyService::setup(service::ServiceContext& context) {
     // On the sim clock, decisions follow the poses (see on_pose) while sim time is known.
     if (!sim_clock_ || sim_time_ns_ == 0) cycle();
   });
-  context.set_state(v1::SERVICE_STATE_RUNNING, mission_ == Mission::kActive ? "waiting for pose" : mission_reason_);
+  context.set_state(v1::SERVICE_STATE_RUNNING, mission_.active() ? "waiting for pose" : mission_.reason());
 }
 
 void SafetyService::on_shutdown(service::ServiceContext&) {
@@ -174,28 +172,20 @@ void SafetyService::on_path(const v1::ExecutablePath& path) {
 }
 
 void SafetyService::on_mission(const v1::MissionCommand& command) {
-  if (!command.target_robot().empty() && command.target_robot() != robot_id_) return;
-  switch (command.command_case()) {
-    case v1::MissionCommand::kEmergencyStop:
-      mission_ = Mission::kEmergency;
-      mission_reason_ = "emergency stop" + (command.emergency_stop().reason().empty()
-                                                ? std::string()
-                                                : ": " + command.emergency_stop().reason());
+  const bool was_active = mission_.active();
+  const auto state = mission_.apply(command, robot_id_);
+  if (!state) return;
+  switch (*state) {
+    case service::MissionState::State::kEmergency:
       emergency_stops_->increment();
-      core::LogLine(core::LogLevel::kWarn, "safety") << robot_id_ << ": " << mission_reason_;
-      halt(mission_reason_);  // at once, not at the next cycle
+      core::LogLine(core::LogLevel::kWarn, "safety") << robot_id_ << ": " << mission_.reason();
+      halt(mission_.reason());  // at once, not at the next cycle
       break;
-    case v1::MissionCommand::kStop:
-      mission_ = Mission::kStopped;
-      mission_reason_ = "mission stopped";
-      halt(mission_reason_);
+    case service::MissionState::State::kStopped:
+      halt(mission_.reason());
       break;
-    case v1::MissionCommand::kStart:
-      if (mission_ != Mission::kActive) core::LogLine(core::LogLevel::kInfo, "safety") << robot_id_ << ": mission start";
-      mission_ = Mission::kActive;
-      mission_reason_.clear();
-      break;
-    default:
+    case service::MissionState::State::kActive:
+      if (!was_active) core::LogLine(core::LogLevel::kInfo, "safety") << robot_id_ << ": mission start";
       break;
   }
 }
@@ -267,11 +257,11 @@ void SafetyService::cycle() {
     context_->set_state(v1::SERVICE_STATE_DEGRADED, "waiting for pose on " + topics::pose(robot_id_));
     return;
   }
-  if (mission_ != Mission::kActive) {
+  if (!mission_.active()) {
     // Repeat the stop: a driver that missed the first one still halts within a cycle.
     publish(to_motion_command(last_));
     share_fragment();
-    context_->set_state(v1::SERVICE_STATE_RUNNING, mission_reason_);
+    context_->set_state(v1::SERVICE_STATE_RUNNING, mission_.reason());
     return;
   }
   const Decision decision =
@@ -316,7 +306,7 @@ void SafetyService::share_fragment() {
   if (!position_) return;
   // Outside an active mission the robot stands still whatever the resolver last decided.
   Fragment f = resolver_->fragment(*position_);
-  if (mission_ != Mission::kActive) {
+  if (!mission_.active()) {
     f.stationary = true;
     f.speed_mps = 0.0;
     f.waypoints_m.clear();

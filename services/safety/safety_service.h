@@ -17,6 +17,7 @@
 
 #include "common/safety/fragment_sharing.h"
 #include "common/safety/resolver.h"
+#include "common/service/mission_state.h"
 #include "common/service/service.h"
 #include "hexplore/v1/mission.pb.h"
 #include "hexplore/v1/motion.pb.h"
@@ -39,7 +40,6 @@ class SafetyService : public service::Service {
   void fill_status(v1::ServiceStatus& status) override;
 
  private:
-  enum class Mission { kActive, kStopped, kEmergency };
   struct Peer {
     std::optional<Fragment> fragment;
     int64_t fragment_ns = 0;          // receive time, loop clock
@@ -86,8 +86,7 @@ class SafetyService : public service::Service {
   double path_speed_mps_ = 0.0;
   std::optional<Eigen::Vector3d> look_at_;
   std::map<std::string, Peer> peers_;
-  Mission mission_ = Mission::kActive;
-  std::string mission_reason_;
+  service::MissionState mission_;  // active, stopped or halted, by the station's commands
   Decision last_;
   ResolverCounters reported_;   // counters already added to the metrics
 

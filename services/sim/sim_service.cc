@@ -188,21 +188,20 @@ void SimService::on_motion(const v1::MotionCommand& command) {
 }
 
 void SimService::on_mission(const v1::MissionCommand& command) {
-  if (!command.target_robot().empty() && command.target_robot() != robot_id_) return;
-  switch (command.command_case()) {
-    case v1::MissionCommand::kEmergencyStop:
+  const auto state = mission_.apply(command, robot_id_);
+  if (!state) return;
+  switch (*state) {
+    case service::MissionState::State::kEmergency:
       if (motion_->state() != MotionState::kEmergencyStop) emergency_stops_->increment();
       motion_->emergency_stop();
       publish_pose();  // report the halt at once, not at the next step
       break;
-    case v1::MissionCommand::kStop:
+    case service::MissionState::State::kStopped:
       motion_->stop();
       publish_pose();
       break;
-    case v1::MissionCommand::kStart:
+    case service::MissionState::State::kActive:
       motion_->release();
-      break;
-    default:
       break;
   }
 }

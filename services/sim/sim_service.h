@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "common/radio/pose_schedule.h"
+#include "common/service/mission_state.h"
 #include "common/service/service.h"
 #include "common/sim/lidar.h"
 #include "common/sim/ray_caster.h"
@@ -74,6 +75,7 @@ class SimService : public service::Service {
   SceneInfo scene_;
   std::unique_ptr<RayCaster> caster_;
   std::unique_ptr<RobotMotion> motion_;
+  service::MissionState mission_;  // what the station's commands asked of this robot
   std::vector<Sensor> sensors_;
   std::map<std::string, Teammate> teammates_;
   std::optional<Eigen::Vector3d> look_at_;
