@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "common/highlevel/contribution_log.h"
-#include "common/highlevel/floyd_warshall.h"
+#include "tests/support/floyd_warshall.h"
 #include "common/highlevel/map_fusion.h"
 #include "common/highlevel/proto_convert.h"
 #include "common/highlevel/segmenter.h"

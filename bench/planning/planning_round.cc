@@ -17,7 +17,7 @@
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/planner_registry.h"
 #include "common/planning/rng.h"
-#include "common/planning/synthetic_scene.h"
+#include "tests/support/planning_scene.h"
 
 using namespace hexplore;
 using namespace hexplore::planning;

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "common/highlevel/floyd_warshall.h"
+#include "tests/support/floyd_warshall.h"
 #include "common/highlevel/high_level_map.h"
 #include "common/highlevel/segmenter.h"
 #include "tests/highlevel/synthetic_map.h"

@@ -9,7 +9,7 @@
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/mtsp_problem.h"
 #include "common/planning/route_pruning.h"
-#include "common/planning/synthetic_scene.h"
+#include "tests/support/planning_scene.h"
 #include "common/planning/visibility.h"
 
 namespace hexplore::planning {

@@ -13,7 +13,7 @@
 #include "common/planning/planner_registry.h"
 #include "common/planning/rng.h"
 #include "common/planning/round_inputs.h"
-#include "common/planning/synthetic_scene.h"
+#include "tests/support/planning_scene.h"
 #include "tests/planning/planner_fixture.h"
 
 namespace hexplore::planning {

@@ -14,7 +14,7 @@
 #include "common/core/endpoints.h"
 #include "common/core/team_config.h"
 #include "common/highlevel/proto_convert.h"
-#include "common/planning/synthetic_scene.h"
+#include "tests/support/planning_scene.h"
 #include "common/service/options.h"
 #include "common/service/service.h"
 #include "common/transport/publisher.h"

@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "common/core/team_config.h"
-#include "common/planning/synthetic_scene.h"
+#include "tests/support/planning_scene.h"
 
 namespace hexplore::planning {
 namespace {

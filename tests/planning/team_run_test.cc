@@ -10,7 +10,7 @@
 #include "common/planning/planner_registry.h"
 #include "common/planning/robot_vertex.h"
 #include "common/planning/round_inputs.h"
-#include "common/planning/synthetic_scene.h"
+#include "tests/support/planning_scene.h"
 
 namespace hexplore::planning {
 namespace {

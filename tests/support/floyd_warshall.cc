@@ -1,4 +1,4 @@
-#include "common/highlevel/floyd_warshall.h"
+#include "tests/support/floyd_warshall.h"
 
 #include <limits>
 

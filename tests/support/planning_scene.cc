@@ -1,4 +1,4 @@
-#include "common/planning/synthetic_scene.h"
+#include "tests/support/planning_scene.h"
 
 #include <set>
 
