@@ -19,11 +19,12 @@
 #include <vector>
 
 #include "common/highlevel/contribution_log.h"
-#include "tests/support/floyd_warshall.h"
 #include "common/highlevel/map_fusion.h"
 #include "common/highlevel/proto_convert.h"
 #include "common/highlevel/segmenter.h"
+
 #include "tests/highlevel/synthetic_map.h"
+#include "tests/support/floyd_warshall.h"
 
 namespace hl = hexplore::highlevel;
 using Clock = std::chrono::steady_clock;

@@ -17,6 +17,7 @@
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/planner_registry.h"
 #include "common/planning/rng.h"
+
 #include "tests/support/planning_scene.h"
 
 using namespace hexplore;

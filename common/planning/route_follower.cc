@@ -142,9 +142,9 @@ std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector
   if (observing_) {
     // Each aim lasts its time (plan_aims: the target's observation time, or its share of the
     // view's) and ends early once its target is complete (or given up): a look at one target
-    // often completes the next ones too, whose aims are then passed over. The dwell is over when the aims are, or as soon as every
-    // target it is for is complete (the map lags the scans by about a settle time, so this
-    // never cuts a dwell short by more).
+    // often completes the next ones too, whose aims are then passed over. The dwell is over
+    // when the aims are, or as soon as every target it is for is complete (the map lags the
+    // scans by about a settle time, so this never cuts a dwell short by more).
     const size_t was = aim_index_;
     const bool time_left = was < aims_.size() && now_s - aim_start_s_ < aim_s_;
     while (aim_index_ < aims_.size() &&

@@ -5,10 +5,11 @@
 // facade targets for the species' observation time, once per view or once per target
 // (FollowerOptions::Dwell; the gimbal of a long-range LiDAR aims at them one after the other,
 // moving on early when the target aimed at is complete), then move on. A ground view is done
-// on arrival ("observed once a robot reaches its centre"). Views whose targets are all complete (or given up) by the time the robot gets
-// there are passed by, and a dwell ends as soon as its targets are complete. Whether the
-// targets got complete is judged a settle time later, when the map has caught up with the
-// scans, and what stayed incomplete counts as an attempt in the team's GiveUpLedger.
+// on arrival ("observed once a robot reaches its centre"). Views whose targets are all
+// complete (or given up) by the time the robot gets there are passed by, and a dwell ends as
+// soon as its targets are complete. Whether the targets got complete is judged a settle time
+// later, when the map has caught up with the scans, and what stayed incomplete counts as an
+// attempt in the team's GiveUpLedger.
 // When the robot is blocked or makes no progress, the view is skipped (an attempt too), the
 // vertex it could not reach is kept off by later paths, and the robot first backs off along
 // its recent trail (a leg of its own, to a trail point at least 1 m back) before the path to

@@ -24,7 +24,6 @@ class MissionState {
   // repeated command returns its state again (a driver that missed the first one halts).
   std::optional<State> apply(const v1::MissionCommand& command, const std::string& robot_id);
 
-  State state() const { return state_; }
   bool active() const { return state_ == State::kActive; }
   // Why the robot is not active ("mission stopped", "emergency stop: <why>", ...); empty when active.
   const std::string& reason() const { return reason_; }

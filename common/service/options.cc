@@ -44,14 +44,14 @@ double Options::number(const std::string& key, double fallback, double min, doub
 double Options::positive(const std::string& key, double fallback) const {
   if (!has(key)) return fallback;
   const double v = number(key, fallback);
-  if (!(v > 0.0)) throw OptionError(key, "expects a positive number, got " + quoted(args_.at(key)));
+  if (!(v > 0.0)) throw OptionError(key, "expects a positive number, got " + quoted(text(key)));
   return v;
 }
 
 int Options::integer(const std::string& key, int fallback, int min, int max) const {
   if (!has(key)) return fallback;
   const double v = number(key, fallback, min, max);
-  if (v != std::floor(v)) throw OptionError(key, "expects a whole number, got " + quoted(args_.at(key)));
+  if (v != std::floor(v)) throw OptionError(key, "expects a whole number, got " + quoted(text(key)));
   return static_cast<int>(v);
 }
 

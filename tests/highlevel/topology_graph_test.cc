@@ -5,10 +5,11 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/support/floyd_warshall.h"
 #include "common/highlevel/high_level_map.h"
 #include "common/highlevel/segmenter.h"
+
 #include "tests/highlevel/synthetic_map.h"
+#include "tests/support/floyd_warshall.h"
 
 namespace hexplore::highlevel {
 namespace {

@@ -9,8 +9,9 @@
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/mtsp_problem.h"
 #include "common/planning/route_pruning.h"
-#include "tests/support/planning_scene.h"
 #include "common/planning/visibility.h"
+
+#include "tests/support/planning_scene.h"
 
 namespace hexplore::planning {
 namespace {

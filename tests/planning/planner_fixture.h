@@ -7,6 +7,7 @@
 
 #include "common/core/team_config.h"
 #include "common/planning/planner_registry.h"
+
 #include "tests/support/planning_scene.h"
 
 namespace hexplore::planning::testing {

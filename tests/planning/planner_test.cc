@@ -13,8 +13,8 @@
 #include "common/planning/planner_registry.h"
 #include "common/planning/rng.h"
 #include "common/planning/round_inputs.h"
-#include "tests/support/planning_scene.h"
 #include "tests/planning/planner_fixture.h"
+#include "tests/support/planning_scene.h"
 
 namespace hexplore::planning {
 namespace {

@@ -14,7 +14,6 @@
 #include "common/core/endpoints.h"
 #include "common/core/team_config.h"
 #include "common/highlevel/proto_convert.h"
-#include "tests/support/planning_scene.h"
 #include "common/service/options.h"
 #include "common/service/service.h"
 #include "common/transport/publisher.h"
@@ -23,6 +22,7 @@
 #include "common/transport/topics.h"
 
 #include "tests/support/feed_until.h"
+#include "tests/support/planning_scene.h"
 
 namespace hexplore::planning_service {
 namespace {

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "common/core/team_config.h"
+
 #include "tests/support/planning_scene.h"
 
 namespace hexplore::planning {

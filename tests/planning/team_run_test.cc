@@ -10,6 +10,7 @@
 #include "common/planning/planner_registry.h"
 #include "common/planning/robot_vertex.h"
 #include "common/planning/round_inputs.h"
+
 #include "tests/support/planning_scene.h"
 
 namespace hexplore::planning {
