@@ -2,13 +2,13 @@
 
 #include <cmath>
 
-#include "common/planning/robot_vertex.h"
 
 namespace hexplore::planning {
 
 AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const std::vector<TaskView>& views,
                                     const std::vector<TaskCluster>& clusters, const TeamCapabilities& team,
-                                    const std::vector<RobotState>& robots) {
+                                    const std::vector<RobotState>& robots,
+                                    const std::vector<std::optional<uint64_t>>& robot_vertices) {
   AssignmentInstance out;
   const int S = int(team.species.size());
   const int R = int(robots.size());
@@ -20,7 +20,7 @@ AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const
   out.robot_vertex.resize(size_t(R), 0);
   std::vector<char> robot_on_graph(size_t(R), 0);
   for (int r = 0; r < R; ++r)
-    if (auto v = robot_vertex(graph, robots[size_t(r)].position, team.graph_species_of(robots[size_t(r)].species))) {
+    if (const auto& v = robot_vertices[size_t(r)]) {
       out.robot_vertex[size_t(r)] = *v;
       robot_on_graph[size_t(r)] = 1;
     }

@@ -5,6 +5,7 @@
 // instance over the clusters that at least one robot can serve.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "common/planning/capabilities.h"
@@ -25,8 +26,10 @@ struct AssignmentInstance {
   std::vector<double> speed;           // per species
 };
 
+// `robot_vertices` is RoundInputs::robot_vertices (index = robot).
 AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const std::vector<TaskView>& views,
                                     const std::vector<TaskCluster>& clusters, const TeamCapabilities& team,
-                                    const std::vector<RobotState>& robots);
+                                    const std::vector<RobotState>& robots,
+                                    const std::vector<std::optional<uint64_t>>& robot_vertices);
 
 }  // namespace hexplore::planning

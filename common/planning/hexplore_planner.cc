@@ -16,9 +16,8 @@
 #include "common/planning/labels.h"
 #include "common/planning/mnss.h"
 #include "common/planning/rng.h"
-#include "common/planning/robot_vertex.h"
-#include "common/planning/route_pruning.h"
 #include "common/planning/round_inputs.h"
+#include "common/planning/route_pruning.h"
 
 namespace hexplore::planning {
 namespace {
@@ -123,7 +122,7 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
   out.times.clustering_s = clock.lap();
 
   // Assignment.
-  const AssignmentInstance inst = build_assignment(graph, views, clusters, team, req.robots);
+  const AssignmentInstance inst = build_assignment(graph, views, clusters, team, req.robots, in.robot_vertices);
   out.dropped_clusters = int(inst.dropped.size());
   for (int c : inst.city_cluster) out.open_views += int(clusters[size_t(c)].views.size());
   std::vector<uint64_t> city_ids;
@@ -233,9 +232,7 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
   // Dynamic Voronoi partition: each view goes to the nearest (graph distance) robot whose
   // species may take it; ties to the lower robot index.
   const size_t R = req.robots.size();
-  std::vector<std::optional<uint64_t>> vertex(R);
-  for (size_t r = 0; r < R; ++r)
-    vertex[r] = robot_vertex(graph, req.robots[r].position, team.graph_species_of(req.robots[r].species));
+  const std::vector<std::optional<uint64_t>>& vertex = in.robot_vertices;
   std::vector<std::vector<int>> owned(R);
   for (size_t v = 0; v < views.size(); ++v) {
     int best = -1;

@@ -58,7 +58,7 @@ PlanResult MdvrpPlanner::plan(const PlanRequest& req) {
   out.times.views_s = clock.lap();
 
   // The per-robot cost matrices of the vehicle-routing problem.
-  ViewCosts costs = build_view_costs(graph, views, team, req.robots, in.reachable);
+  ViewCosts costs = build_view_costs(graph, views, team, req.robots, in.robot_vertices, in.reachable);
   const int N = costs.nodes();
   const size_t R = req.robots.size();
   out.dropped_clusters = int(costs.unservable.size());

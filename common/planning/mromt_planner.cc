@@ -10,7 +10,6 @@
 #include "common/planning/graph_tour.h"
 #include "common/planning/hungarian.h"
 #include "common/planning/lloyd_clusters.h"
-#include "common/planning/robot_vertex.h"
 #include "common/planning/round_inputs.h"
 #include "common/planning/view_costs.h"
 
@@ -80,12 +79,11 @@ PlanResult MromtPlanner::plan(const PlanRequest& req) {
 
   // The batch of this round: the K views nearest (in travel time) to a robot that may take them.
   const size_t R = req.robots.size();
-  std::vector<std::optional<uint64_t>> vertex(R);
+  const std::vector<std::optional<uint64_t>>& vertex = in.robot_vertices;
   std::vector<std::unordered_map<uint64_t, double>> from_robot(R);
   std::vector<double> speed(team.species.size());
   for (size_t k = 0; k < speed.size(); ++k) speed[k] = std::max(1e-6, team.species[k].speed_mps);
   for (size_t r = 0; r < R; ++r) {
-    vertex[r] = robot_vertex(graph, req.robots[r].position, req.robots[r].species);
     if (vertex[r]) from_robot[r] = graph.distances_from(*vertex[r], req.robots[r].species);
   }
   auto time_from = [&](size_t r, uint64_t ground) {

@@ -28,17 +28,28 @@ void check_request(const std::string& planner, const PlanRequest& req, const Tea
                                   std::to_string(r.species));
 }
 
+std::vector<std::optional<uint64_t>> robot_vertices(const highlevel::TopologyGraph& graph,
+                                                    const std::vector<RobotState>& robots,
+                                                    const TeamCapabilities& team) {
+  std::vector<std::optional<uint64_t>> out;
+  out.reserve(robots.size());
+  for (const auto& r : robots) out.push_back(robot_vertex(graph, r.position, team.graph_species_of(r.species)));
+  return out;
+}
+
 // Limited to the stand region (below) and to vertices with room for the species' body (not,
 // e.g., the ground seen under a vehicle: paths may pass such spots, views may not stand there).
 std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
                                                            const std::vector<RobotState>& robots,
+                                                           const std::vector<std::optional<uint64_t>>& robot_vertices,
                                                            const TeamCapabilities& team,
                                                            const Eigen::AlignedBox3d& region) {
   std::vector<std::unordered_set<uint64_t>> out(team.species.size());
-  for (const auto& r : robots) {
+  for (size_t i = 0; i < robots.size(); ++i) {
+    const RobotState& r = robots[i];
     if (size_t(r.species) >= out.size()) continue;
     const int g = team.graph_species_of(r.species);
-    const auto start = robot_vertex(graph, r.position, g);
+    const auto& start = robot_vertices[i];
     if (!start) continue;
     auto& set = out[size_t(r.species)];
     if (set.count(*start)) continue;  // a teammate of the same species is in the same component
@@ -60,8 +71,10 @@ Eigen::AlignedBox3d stand_region(const Eigen::AlignedBox3d& region, double max_r
 RoundInputs prepare_round(const PlanRequest& req, const TeamCapabilities& view_team, const PlannerOptions& o,
                           bool record_targets) {
   RoundInputs in;
-  in.reachable =
-      reachable_ground(req.map->graph(), req.robots, view_team, stand_region(o.region, view_team.max_observation_range()));
+  const highlevel::TopologyGraph& graph = req.map->graph();
+  in.robot_vertices = robot_vertices(graph, req.robots, view_team);
+  in.reachable = reachable_ground(graph, req.robots, in.robot_vertices, view_team,
+                                  stand_region(o.region, view_team.max_observation_range()));
   in.context = std::make_unique<MapContext>(*req.map, o, union_of(in.reachable), req.given_up);
   in.context->reachable_by_species = in.reachable;
   in.views = generate_task_views(*in.context, view_team, o, &in.stats, record_targets ? &in.targets : nullptr);

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -17,6 +18,10 @@
 namespace hexplore::planning {
 
 struct RoundInputs {
+  // Where each robot joins the topology graph (index = robot; robot_vertex() on the graph
+  // species of its species), nullopt off an empty graph. Computed once per round: every
+  // later stage (costs, Voronoi partition, priority batch) starts from these.
+  std::vector<std::optional<uint64_t>> robot_vertices;
   // Ground vertices each species can drive to from where its robots stand (index = species),
   // inside the stand region and with room for the species' body.
   std::vector<std::unordered_set<uint64_t>> reachable;
@@ -44,10 +49,16 @@ RoundInputs prepare_round(const PlanRequest& request, const TeamCapabilities& vi
 // on the angle. An unbounded or empty region is returned as it is.
 Eigen::AlignedBox3d stand_region(const Eigen::AlignedBox3d& region, double max_range_m);
 
-// Ground vertices each species can drive to from its robots' positions (see RoundInputs),
+// Each robot's graph vertex (RoundInputs::robot_vertices) on the graph of its graph species.
+std::vector<std::optional<uint64_t>> robot_vertices(const highlevel::TopologyGraph& graph,
+                                                    const std::vector<RobotState>& robots,
+                                                    const TeamCapabilities& team);
+
+// Ground vertices each species can drive to from its robots' vertices (see RoundInputs),
 // on the terrain of its graph species (TeamCapabilities::graph_species_of).
 std::vector<std::unordered_set<uint64_t>> reachable_ground(const highlevel::TopologyGraph& graph,
                                                            const std::vector<RobotState>& robots,
+                                                           const std::vector<std::optional<uint64_t>>& robot_vertices,
                                                            const TeamCapabilities& team,
                                                            const Eigen::AlignedBox3d& region);
 

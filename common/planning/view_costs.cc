@@ -5,7 +5,6 @@
 #include <map>
 
 #include "common/planning/labels.h"
-#include "common/planning/robot_vertex.h"
 
 namespace hexplore::planning {
 
@@ -21,6 +20,7 @@ double observation_time_s(const TaskView& view, const SpeciesCapability& species
 
 ViewCosts build_view_costs(const highlevel::TopologyGraph& graph, const std::vector<TaskView>& views,
                            const TeamCapabilities& team, const std::vector<RobotState>& robots,
+                           const std::vector<std::optional<uint64_t>>& robot_vertices,
                            const std::vector<std::unordered_set<uint64_t>>& reachable) {
   ViewCosts out;
   const int S = int(team.species.size());
@@ -29,8 +29,8 @@ ViewCosts build_view_costs(const highlevel::TopologyGraph& graph, const std::vec
   for (const auto& r : robots) {
     used[size_t(r.species)] = 1;
     out.robot_species.push_back(r.species);
-    out.robot_vertex.push_back(robot_vertex(graph, r.position, r.species));
   }
+  out.robot_vertex = robot_vertices;
   out.speed.resize(size_t(S));
   for (int k = 0; k < S; ++k) out.speed[size_t(k)] = std::max(1e-6, team.species[size_t(k)].speed_mps);
 
@@ -112,7 +112,7 @@ ViewCosts build_view_costs(const highlevel::TopologyGraph& graph, const std::vec
   for (int n = 0; n < N; ++n)
     if (!std::binary_search(keep.begin(), keep.end(), n)) unservable.push_back(out.view_of_node[size_t(n)]);
   // Only views reachable from some robot are left, so this recursion ends after one step.
-  ViewCosts again = build_view_costs(graph, servable, team, robots, reachable);
+  ViewCosts again = build_view_costs(graph, servable, team, robots, robot_vertices, reachable);
   for (int& v : again.view_of_node) v = original[size_t(v)];
   for (int v : again.unservable) unservable.push_back(original[size_t(v)]);
   std::sort(unservable.begin(), unservable.end());

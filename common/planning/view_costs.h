@@ -46,10 +46,11 @@ struct ViewCosts {
   int depot(int robot) const { return nodes() + robot; }
 };
 
-// `reachable` is RoundInputs::reachable (index = species). Only species that some robot has
+// `robot_vertices` and `reachable` are RoundInputs' (index = robot, and = species). Only species that some robot has
 // get a matrix (the others stay empty and every entry reads +inf through service).
 ViewCosts build_view_costs(const highlevel::TopologyGraph& graph, const std::vector<TaskView>& views,
                            const TeamCapabilities& team, const std::vector<RobotState>& robots,
+                           const std::vector<std::optional<uint64_t>>& robot_vertices,
                            const std::vector<std::unordered_set<uint64_t>>& reachable);
 
 }  // namespace hexplore::planning
