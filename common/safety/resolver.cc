@@ -128,11 +128,7 @@ Decision ConflictResolver::stop(std::string reason, std::string yielding_to) {
   return d;
 }
 
-Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& desired_path, double speed_mps,
-                                  const std::vector<Fragment>& peers_in, double now_s) {
-  const double since_last_s = std::max(0.0, now_s - last_decide_s_);
-  last_decide_s_ = now_s;
-  // Teammates that claim to drive but have not moved kStillM in kFrozenS count as stopped.
+std::vector<Fragment> ConflictResolver::with_frozen_as_stopped(const std::vector<Fragment>& peers_in, double now_s) {
   // Longer than any honest wait a driving teammate's fragment shows (a yield to a third robot
   // crossing, a give-way), far shorter than a mission.
   constexpr double kStillM = 0.2;
@@ -150,17 +146,10 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
       adjusted.back().speed_mps = 0.0;
     }
   }
-  std::vector<const Fragment*> peers;
-  for (const auto& p : adjusted) peers.push_back(&p);
-  std::sort(peers.begin(), peers.end(), [](const Fragment* a, const Fragment* b) { return a->robot_id < b->robot_id; });
-  // Yields to robots that are no longer heard from end with them.
-  for (auto it = yields_.begin(); it != yields_.end();) {
-    const bool present = std::any_of(peers.begin(), peers.end(), [&](const Fragment* p) { return p->robot_id == it->first; });
-    it = present ? std::next(it) : yields_.erase(it);
-  }
+  return adjusted;
+}
 
-  // Progress along the desired path: look for the robot near where it was last time, unless
-  // it is clearly elsewhere (a long detour, a relocalisation), then anywhere on the path.
+Path ConflictResolver::remaining_desired(const Eigen::Vector3d& position, const Path& desired_path, double speed_mps) {
   if (desired_path != progress_path_) {
     progress_path_ = desired_path;
     progress_s_ = 0.0;
@@ -176,21 +165,11 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
     at_s = anywhere_s;
   }
   progress_s_ = at_s;
-  if (desired_path.empty() || path_length(remaining) < options_.min_move_m || !(speed_mps > 0.0)) {
-    yields_.clear();
-    conflicting_.clear();
-    was_detoured_ = false;
-    give_way_approved_ = false;
-    return stop(desired_path.empty() ? "no path" : "at goal", "");
-  }
+  return remaining;
+}
 
-  // Obstacle avoidance: every stationary teammate is a box to drive around.
-  std::vector<ObstacleBox> boxes;
-  for (const Fragment* p : peers) {
-    if (!p->stationary) continue;
-    const double grow = radius_m_ + options_.obstacle_margin_m;
-    boxes.push_back({p->robot_id, p->box_min_m.head<2>().array() - grow, p->box_max_m.head<2>().array() + grow});
-  }
+DetourResult ConflictResolver::detour_stopped(const Eigen::Vector3d& position, const Path& desired_path,
+                                              const Path& remaining, const std::vector<ObstacleBox>& boxes) {
   DetourOptions detour_options;
   detour_options.clearance_m = options_.detour_clearance_m;
   // Once on a detour, keep following it while the plan and the obstacles last: re-deriving it
@@ -205,14 +184,15 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
     detour_path_ = detour.path;
     detour_for_ = desired_path;
   }
-  Path candidate = detour.path;
   if (detour.blocked) ++counters_.blocked;
   // A blocked robot shows teammates where it wants to go (they may have to make room).
   wanted_near_ = detour.blocked ? truncate_to_length(base, options_.eta_p_m) : Path{};
+  return detour;
+}
 
-  // Two robots standing in each other's way (each blocked by the other's box, e.g. each on the
-  // other's goal): the higher id makes room by stepping aside off the other's wanted path.
-  std::string giving_way_to;
+void ConflictResolver::update_give_way(const Eigen::Vector3d& position, const DetourResult& detour,
+                                       const std::vector<const Fragment*>& peers,
+                                       const std::vector<ObstacleBox>& boxes, double since_last_s) {
   if (!give_way_to_.empty()) {
     const auto it = std::find_if(peers.begin(), peers.end(), [&](const Fragment* p) { return p->robot_id == give_way_to_; });
     // Step aside all the way first: released halfway, the robot would stand in the way again.
@@ -248,17 +228,11 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
       }
     }
   }
-  if (!give_way_to_.empty()) {
-    giving_way_to = give_way_to_;
-    candidate = {position, give_way_spot_};
-    wanted_near_.clear();
-  }
+}
 
-  // Collision avoidance against moving teammates (and stopped ones this robot still waits for).
-  const Path near = truncate_to_length(candidate, options_.eta_p_m + options_.extrapolate_m);
-  double limit_s = kInf;
-  std::string limit_reason;
-  std::string yielding_to;
+ConflictResolver::Limit ConflictResolver::yield_limit(const Path& near, const std::vector<const Fragment*>& peers,
+                                                     double speed_mps, double now_s) {
+  Limit out;
   std::set<std::string> conflicting_now;
   for (const Fragment* p : peers) {
     auto record = yields_.find(p->robot_id);
@@ -280,27 +254,7 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
 
     bool yield = false;
     if (record != yields_.end()) {
-      yield = true;
-      const std::string lowest = lowest_in_wait_cycle(p->robot_id, peers);
-      // A stopped robot that shows a wanted path and waits for this one is blocked by this
-      // robot's box: it cannot move first, so this robot must.
-      const bool blocked_by_me = p->stationary && p->yielding_to == robot_id_ && !p->waypoints_m.empty();
-      if (blocked_by_me) {
-        yield = false;
-        ++counters_.deadlock_breaks;
-      } else if (!lowest.empty()) {
-        // Waiting in a circle (two robots waiting for each other, or more): the lowest id in
-        // the circle goes, the others keep waiting. Every member sees the same circle.
-        if (lowest == robot_id_) {
-          yield = false;
-          ++counters_.deadlock_breaks;
-        }
-      } else if (p->stationary && now_s - record->second.since_s > options_.deadlock_timeout_s) {
-        // The robot waited for has stopped for reasons of its own (blocked elsewhere, scanning,
-        // waiting further down a chain): stop waiting and drive around it as an obstacle.
-        yield = false;
-        ++counters_.deadlock_breaks;
-      }
+      yield = still_yielding(*p, record->second, peers, now_s);
     } else if (p->yielding_to != robot_id_) {
       const double t_own = stationary_ ? kInf : time_to_reach(conflict->own_entry_m, speed_mps);
       const double t_peer = p->stationary ? kInf : time_to_reach(conflict->peer_entry_m, p->speed_mps);
@@ -317,70 +271,151 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
       continue;
     }
     const double stop_at = conflict->own_entry_m - options_.stop_buffer_m;
-    if (stop_at < limit_s) {
-      limit_s = stop_at;
-      yielding_to = p->robot_id;
-      limit_reason = "yield to " + p->robot_id + " (" + std::string(conflict_kind_name(record->second.kind)) + ")";
+    if (stop_at < out.limit_s) {
+      out.limit_s = stop_at;
+      out.yielding_to = p->robot_id;
+      out.reason = "yield to " + p->robot_id + " (" + std::string(conflict_kind_name(record->second.kind)) + ")";
     }
   }
   conflicting_ = std::move(conflicting_now);
+  return out;
+}
 
-  // Last line of defence against inconsistent views: never close in on a teammate's body
-  // beyond the hard distance (or beyond the current distance when already inside it). A
-  // teammate known only from an older fragment may be anywhere on its trail. Stopped teammates
-  // too: their box is shrunk when the robot starts inside it (detours, making room), and a
-  // box's corners lie farther from the body than its faces, so sliding along the shrunk face
-  // could still reach the body. Returns the stopped teammate that cut the path, if one did.
-  auto hold_off = [&](const Path& path, double& limit, std::string& why) -> const Fragment* {
-    const Fragment* stopped_by = nullptr;
-    const auto samples = sample_path(path, options_.sample_step_m * 0.5);
-    for (const Fragment* p : peers) {
-      const double hard = radius_m_ + p->body_radius_m() + options_.hard_margin_m +
-                          (p->stationary ? 0.0 : (speed_mps + p->speed_mps) * options_.cycle_s);
-      const double threshold = std::min(hard, p->distance_to(position) - 1e-3);
-      for (size_t i = 1; i < samples.size() && samples[i - 1].s_m < limit; ++i) {
-        if (p->distance_to(samples[i].point) < threshold) {
-          limit = samples[i - 1].s_m;
-          why = "too close to " + p->robot_id;
-          stopped_by = p->stationary ? p : nullptr;
-          break;
-        }
-      }
-    }
-    return stopped_by;
-  };
-  const double limit_before = limit_s;
-  const Fragment* held_by = hold_off(candidate, limit_s, limit_reason);
-  if (held_by != nullptr && limit_s < options_.min_move_m) {
-    // Held off inside a stopped teammate's box, so the detour cannot go round it: step out of
-    // the box straight away from its body first; the next decisions go round it.
-    const Eigen::Vector2d lo = held_by->box_min_m.head<2>().array() - (radius_m_ + options_.obstacle_margin_m);
-    const Eigen::Vector2d hi = held_by->box_max_m.head<2>().array() + (radius_m_ + options_.obstacle_margin_m);
-    Eigen::Vector2d away = (position - held_by->position_m).head<2>();
-    if (away.norm() < 1e-6) away = Eigen::Vector2d::UnitX();
-    away.normalize();
-    double exit_t = kInf;
-    for (int a = 0; a < 2; ++a) {
-      if (std::abs(away[a]) < 1e-9) continue;
-      const double bound = away[a] > 0 ? hi[a] : lo[a];
-      exit_t = std::min(exit_t, (bound - position[a]) / away[a]);
-    }
-    if (std::isfinite(exit_t) && exit_t > 0.0) {
-      const double out = exit_t + options_.detour_clearance_m;
-      const Path step_out{position, position + Eigen::Vector3d(away.x() * out, away.y() * out, 0.0)};
-      double step_limit = limit_before;
-      std::string step_reason;
-      hold_off(step_out, step_limit, step_reason);
-      if (!std::isfinite(step_limit) || step_limit >= options_.min_move_m) {
-        candidate = step_out;
-        limit_s = step_limit;
-        limit_reason = step_reason.empty() ? "stepping out of " + held_by->robot_id + "'s way" : step_reason;
+bool ConflictResolver::still_yielding(const Fragment& peer, const YieldRecord& record,
+                                      const std::vector<const Fragment*>& peers, double now_s) {
+  const std::string lowest = lowest_in_wait_cycle(peer.robot_id, peers);
+  // A stopped robot that shows a wanted path and waits for this one is blocked by this
+  // robot's box: it cannot move first, so this robot must.
+  const bool blocked_by_me = peer.stationary && peer.yielding_to == robot_id_ && !peer.waypoints_m.empty();
+  if (blocked_by_me) {
+    ++counters_.deadlock_breaks;
+    return false;
+  }
+  if (!lowest.empty()) {
+    // Waiting in a circle (two robots waiting for each other, or more): the lowest id in
+    // the circle goes, the others keep waiting. Every member sees the same circle.
+    if (lowest != robot_id_) return true;
+    ++counters_.deadlock_breaks;
+    return false;
+  }
+  if (peer.stationary && now_s - record.since_s > options_.deadlock_timeout_s) {
+    // The robot waited for has stopped for reasons of its own (blocked elsewhere, scanning,
+    // waiting further down a chain): stop waiting and drive around it as an obstacle.
+    ++counters_.deadlock_breaks;
+    return false;
+  }
+  return true;
+}
+
+const Fragment* ConflictResolver::hold_off(const Eigen::Vector3d& position, const Path& path, double speed_mps,
+                                           const std::vector<const Fragment*>& peers, double& limit_s,
+                                           std::string& why) const {
+  const Fragment* stopped_by = nullptr;
+  const auto samples = sample_path(path, options_.sample_step_m * 0.5);
+  for (const Fragment* p : peers) {
+    const double hard = radius_m_ + p->body_radius_m() + options_.hard_margin_m +
+                        (p->stationary ? 0.0 : (speed_mps + p->speed_mps) * options_.cycle_s);
+    const double threshold = std::min(hard, p->distance_to(position) - 1e-3);
+    for (size_t i = 1; i < samples.size() && samples[i - 1].s_m < limit_s; ++i) {
+      if (p->distance_to(samples[i].point) < threshold) {
+        limit_s = samples[i - 1].s_m;
+        why = "too close to " + p->robot_id;
+        stopped_by = p->stationary ? p : nullptr;
+        break;
       }
     }
   }
+  return stopped_by;
+}
 
-  Path approved = std::isfinite(limit_s) ? truncate_to_length(candidate, limit_s) : candidate;
-  std::string reason = limit_reason;
+std::optional<Path> ConflictResolver::step_out_of(const Eigen::Vector3d& position, const Fragment& held_by) const {
+  const Eigen::Vector2d lo = held_by.box_min_m.head<2>().array() - (radius_m_ + options_.obstacle_margin_m);
+  const Eigen::Vector2d hi = held_by.box_max_m.head<2>().array() + (radius_m_ + options_.obstacle_margin_m);
+  Eigen::Vector2d away = (position - held_by.position_m).head<2>();
+  if (away.norm() < 1e-6) away = Eigen::Vector2d::UnitX();
+  away.normalize();
+  double exit_t = kInf;
+  for (int a = 0; a < 2; ++a) {
+    if (std::abs(away[a]) < 1e-9) continue;
+    const double bound = away[a] > 0 ? hi[a] : lo[a];
+    exit_t = std::min(exit_t, (bound - position[a]) / away[a]);
+  }
+  if (!std::isfinite(exit_t) || exit_t <= 0.0) return std::nullopt;
+  const double out = exit_t + options_.detour_clearance_m;
+  return Path{position, position + Eigen::Vector3d(away.x() * out, away.y() * out, 0.0)};
+}
+
+Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& desired_path, double speed_mps,
+                                  const std::vector<Fragment>& peers_in, double now_s) {
+  const double since_last_s = std::max(0.0, now_s - last_decide_s_);
+  last_decide_s_ = now_s;
+  const std::vector<Fragment> adjusted = with_frozen_as_stopped(peers_in, now_s);
+  std::vector<const Fragment*> peers;
+  for (const auto& p : adjusted) peers.push_back(&p);
+  std::sort(peers.begin(), peers.end(), [](const Fragment* a, const Fragment* b) { return a->robot_id < b->robot_id; });
+  // Yields to robots that are no longer heard from end with them.
+  for (auto it = yields_.begin(); it != yields_.end();) {
+    const bool present = std::any_of(peers.begin(), peers.end(), [&](const Fragment* p) { return p->robot_id == it->first; });
+    it = present ? std::next(it) : yields_.erase(it);
+  }
+
+  const Path remaining = remaining_desired(position, desired_path, speed_mps);
+  if (desired_path.empty() || path_length(remaining) < options_.min_move_m || !(speed_mps > 0.0)) {
+    yields_.clear();
+    conflicting_.clear();
+    was_detoured_ = false;
+    give_way_approved_ = false;
+    return stop(desired_path.empty() ? "no path" : "at goal", "");
+  }
+
+  // Obstacle avoidance: every stationary teammate is a box to drive around.
+  std::vector<ObstacleBox> boxes;
+  for (const Fragment* p : peers) {
+    if (!p->stationary) continue;
+    const double grow = radius_m_ + options_.obstacle_margin_m;
+    boxes.push_back({p->robot_id, p->box_min_m.head<2>().array() - grow, p->box_max_m.head<2>().array() + grow});
+  }
+  const DetourResult detour = detour_stopped(position, desired_path, remaining, boxes);
+  Path candidate = detour.path;
+
+  // Two robots standing in each other's way (each blocked by the other's box, e.g. each on the
+  // other's goal): the higher id makes room by stepping aside off the other's wanted path.
+  update_give_way(position, detour, peers, boxes, since_last_s);
+  const std::string giving_way_to = give_way_to_;
+  if (!giving_way_to.empty()) {
+    candidate = {position, give_way_spot_};
+    wanted_near_.clear();
+  }
+
+  // Collision avoidance against moving teammates (and stopped ones this robot still waits for).
+  Limit limit = yield_limit(truncate_to_length(candidate, options_.eta_p_m + options_.extrapolate_m), peers,
+                            speed_mps, now_s);
+
+  // Last line of defence against inconsistent views (see hold_off).
+  const double limit_before = limit.limit_s;
+  const Fragment* held_by = hold_off(position, candidate, speed_mps, peers, limit.limit_s, limit.reason);
+  if (held_by != nullptr && limit.limit_s < options_.min_move_m) {
+    // Held off inside a stopped teammate's box, so the detour cannot go round it: step out of
+    // the box straight away from its body first; the next decisions go round it.
+    if (const auto step_out = step_out_of(position, *held_by)) {
+      double step_limit = limit_before;
+      std::string step_reason;
+      hold_off(position, *step_out, speed_mps, peers, step_limit, step_reason);
+      if (!std::isfinite(step_limit) || step_limit >= options_.min_move_m) {
+        candidate = *step_out;
+        limit.limit_s = step_limit;
+        limit.reason = step_reason.empty() ? "stepping out of " + held_by->robot_id + "'s way" : step_reason;
+      }
+    }
+  }
+  return finish(candidate, limit, giving_way_to, detour, speed_mps);
+}
+
+Decision ConflictResolver::finish(const Path& candidate, Limit limit, const std::string& giving_way_to,
+                                  const DetourResult& detour, double speed_mps) {
+  Path approved = std::isfinite(limit.limit_s) ? truncate_to_length(candidate, limit.limit_s) : candidate;
+  std::string reason = std::move(limit.reason);
+  std::string yielding_to = std::move(limit.yielding_to);
   if (reason.empty() && !giving_way_to.empty()) {
     reason = "giving way to " + giving_way_to;
     yielding_to = giving_way_to;

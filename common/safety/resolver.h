@@ -12,6 +12,7 @@
 // direction.
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -95,6 +96,47 @@ class ConflictResolver {
     double since_s = 0.0;
     ConflictKind kind = ConflictKind::kCrossing;
   };
+
+  // How far the robot may drive along its candidate path, and why not farther.
+  struct Limit {
+    double limit_s = std::numeric_limits<double>::infinity();  // arc length; inf = all of it
+    std::string reason;
+    std::string yielding_to;
+  };
+
+  // The phases of decide(), in order.
+  // Teammates that claim to drive but have not moved 0.2 m in 15 s, as stopped (see last_move_).
+  std::vector<Fragment> with_frozen_as_stopped(const std::vector<Fragment>& peers, double now_s);
+  // The desired path ahead of the robot: looked for near where it was last time, unless it is
+  // clearly elsewhere (a long detour, a relocalisation), then anywhere on the path.
+  Path remaining_desired(const Eigen::Vector3d& position, const Path& desired_path, double speed_mps);
+  // `remaining` (or the detour being followed) bent around the stopped teammates' boxes.
+  DetourResult detour_stopped(const Eigen::Vector3d& position, const Path& desired_path, const Path& remaining,
+                              const std::vector<ObstacleBox>& boxes);
+  // Starts, keeps or abandons making room for a blocked teammate (give_way_to_, give_way_spot_).
+  void update_give_way(const Eigen::Vector3d& position, const DetourResult& detour,
+                       const std::vector<const Fragment*>& peers, const std::vector<ObstacleBox>& boxes,
+                       double since_last_s);
+  // Where the robot must stop on `near` to yield to moving teammates (and stopped ones it
+  // still waits for); starts and ends yields.
+  Limit yield_limit(const Path& near, const std::vector<const Fragment*>& peers, double speed_mps, double now_s);
+  // Whether an ongoing yield to `peer` goes on, or a deadlock rule ends it.
+  bool still_yielding(const Fragment& peer, const YieldRecord& record, const std::vector<const Fragment*>& peers,
+                      double now_s);
+  // Last line of defence against inconsistent views: never close in on a teammate's body beyond
+  // the hard distance (or beyond the current distance when already inside it); lowers
+  // `limit_s` and sets `why`. A teammate known only from an older fragment may be anywhere on
+  // its trail. Stopped teammates too: their box is shrunk when the robot starts inside it
+  // (detours, making room), and a box's corners lie farther from the body than its faces, so
+  // sliding along the shrunk face could still reach the body. Returns the stopped teammate that
+  // cut the path, if one did.
+  const Fragment* hold_off(const Eigen::Vector3d& position, const Path& path, double speed_mps,
+                           const std::vector<const Fragment*>& peers, double& limit_s, std::string& why) const;
+  // Straight out of `held_by`'s grown box, away from its body; nullopt when not inside it.
+  std::optional<Path> step_out_of(const Eigen::Vector3d& position, const Fragment& held_by) const;
+  // The decision: `candidate` cut at the limit, with its reason.
+  Decision finish(const Path& candidate, Limit limit, const std::string& giving_way_to, const DetourResult& detour,
+                  double speed_mps);
 
   Decision stop(std::string reason, std::string yielding_to);
   // A spot 1-4 m away, clear of `blocked`'s wanted path and reachable in a straight line,
