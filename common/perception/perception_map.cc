@@ -54,12 +54,26 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
   }
   IntegrationStats stats;
   stats.points_in = scan.count;
-  const BodyFilter bodies(teammates, params_.teammate_box_margin_m);
-  const double res = params_.resolution_m;
-  const double inv_res = 1.0 / res;
-  const double max_range_sq = scan.max_range_m > 0.0 ? std::pow(scan.max_range_m * (1.0 + 1e-6) + 1e-6, 2) : 0.0;
+  group_points(scan, BodyFilter(teammates, params_.teammate_box_margin_m), stats);
+  fold_into_leaves(stats);
+  stats.voxels_touched = touched_.size();
+  if (touched_.empty()) return stats;
+  brick_index_.clear(touched_.size());
+  bricks_.clear();
+  NeighbourLookup lookup(tree_, bricks_, brick_index_);
+  update_metrics(scan.sensor_origin, lookup);
+  refresh_terrain_around_new(lookup);
+  constexpr uint8_t kScratch = kFlagScratchGeometry | kFlagScratchRisk | kFlagScratchTouched;
+  for (const Pending& g : geometry_set_) g.node->data().flags &= static_cast<uint8_t>(~kScratch);
+  for (const Pending& r : risk_set_) r.node->data().flags &= static_cast<uint8_t>(~kScratch);
+  stats.voxels_recomputed = geometry_set_.size() + risk_set_.size();
+  return stats;
+}
 
-  // 1. Group the points by voxel, accumulating moments relative to the voxel centre in double.
+// 1. Group the points by voxel, accumulating moments relative to the voxel centre in double.
+void PerceptionMap::group_points(const ScanPoints& scan, const BodyFilter& bodies, IntegrationStats& stats) {
+  const double inv_res = 1.0 / params_.resolution_m;
+  const double max_range_sq = scan.max_range_m > 0.0 ? std::pow(scan.max_range_m * (1.0 + 1e-6) + 1e-6, 2) : 0.0;
   groups_.clear(scan.count / 4 + 16);
   accumulators_.clear();
   uint64_t last_packed = FlatKeyMap<uint32_t>::kEmpty;
@@ -116,10 +130,12 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
     acc.q[5] += o.z() * o.z();
     ++stats.points_integrated;
   }
+}
 
-  // 2. Fold each voxel's scan moments into its Gaussian, creating new leaves. Voxels are taken
-  //    in Z-order: the metric updates below visit each voxel's neighbourhood, and LiDAR order
-  //    (ring by ring) would put neighbours thousands of voxels apart in memory and time.
+// 2. Fold each voxel's scan moments into its Gaussian, creating new leaves. Voxels are taken
+//    in Z-order: the metric updates below visit each voxel's neighbourhood, and LiDAR order
+//    (ring by ring) would put neighbours thousands of voxels apart in memory and time.
+void PerceptionMap::fold_into_leaves(IntegrationStats& stats) {
   std::sort(accumulators_.begin(), accumulators_.end(),
             [](const Accumulator& a, const Accumulator& b) { return a.order < b.order; });
   touched_.clear();
@@ -148,16 +164,13 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
     d.count = static_cast<uint16_t>(count);
     touched_.push_back({acc.key, node, acc.n, propagates, created});
   }
-  stats.voxels_touched = touched_.size();
-  if (touched_.empty()) return stats;
+}
 
-  // 3. Normals and sparsity of the touched voxels and of the 26-neighbours of those that
-  //    changed enough to matter to them, then the observation metrics of the touched voxels
-  //    with their new normals. Every Gaussian is final after step 2, so each voxel's geometry
-  //    is computed as soon as it is reached: its neighbourhood is then still in cache.
-  brick_index_.clear(touched_.size());
-  bricks_.clear();
-  NeighbourLookup lookup(tree_, bricks_, brick_index_);
+// 3. Normals and sparsity of the touched voxels and of the 26-neighbours of those that
+//    changed enough to matter to them, then the observation metrics of the touched voxels
+//    with their new normals. Every Gaussian is final after step 2, so each voxel's geometry
+//    is computed as soon as it is reached: its neighbourhood is then still in cache.
+void PerceptionMap::update_metrics(const Eigen::Vector3d& sensor_origin, NeighbourLookup& lookup) {
   geometry_set_.clear();
   for (const Touched& t : touched_) t.node->data().flags |= kFlagScratchTouched;
   // Flags and risk masks (step 4) of a voxel depend on its own normal and on its neighbours'
@@ -167,13 +180,13 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
     VoxelData& d = node->data();
     d.flags |= kFlagScratchGeometry | kFlagScratchRisk;
     const bool touched = (d.flags & kFlagScratchTouched) != 0;
-    update_geometry(key, d, lookup, centre_of(key), scan.sensor_origin, touched, params_);
+    update_geometry(key, d, lookup, centre_of(key), sensor_origin, touched, params_);
     if (!touched) refresh_state(key, d, lookup);
     geometry_set_.push_back({key, node});
   };
   for (const Touched& t : touched_) {
     if ((t.node->data().flags & kFlagScratchGeometry) == 0) geometry(t.key, t.node);
-    update_observation(t.node->data(), centre_of(t.key), scan.sensor_origin, t.points);
+    update_observation(t.node->data(), centre_of(t.key), sensor_origin, t.points);
     refresh_state(t.key, t.node->data(), lookup);
     if (!t.propagates) continue;
     VoxelNode* block[27];
@@ -184,12 +197,14 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
       geometry(NeighbourLookup::offset(t.key, i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1), n);
     }
   }
+}
 
-  // 4. Flags and risk masks of the voxels whose terrain sample may have changed beyond the
-  //    geometry set (refreshed above): around new voxels, the columns within the step window
-  //    (a new cell can change which run a neighbour column's surface is) and the cells below
-  //    within the clearance window. An existing voxel that propagates moves its mean by under
-  //    half a cell, which only its 26-neighbours' steps notice.
+// 4. Flags and risk masks of the voxels whose terrain sample may have changed beyond the
+//    geometry set (refreshed above): around new voxels, the columns within the step window
+//    (a new cell can change which run a neighbour column's surface is) and the cells below
+//    within the clearance window. An existing voxel that propagates moves its mean by under
+//    half a cell, which only its 26-neighbours' steps notice.
+void PerceptionMap::refresh_terrain_around_new(NeighbourLookup& lookup) {
   risk_set_.clear();
   auto add_risk = [&](const octomap::OcTreeKey& k) {
     VoxelNode* n = lookup.at(k);
@@ -210,11 +225,6 @@ IntegrationStats PerceptionMap::integrate(const ScanPoints& scan, const std::vec
     for (int dz = -window_.clearance_cells; dz < -1; ++dz) add_risk(NeighbourLookup::offset(t.key, 0, 0, dz));
   }
   for (const Pending& r : risk_set_) refresh_state(r.key, r.node->data(), lookup);
-  constexpr uint8_t kScratch = kFlagScratchGeometry | kFlagScratchRisk | kFlagScratchTouched;
-  for (const Pending& g : geometry_set_) g.node->data().flags &= static_cast<uint8_t>(~kScratch);
-  for (const Pending& r : risk_set_) r.node->data().flags &= static_cast<uint8_t>(~kScratch);
-  stats.voxels_recomputed = geometry_set_.size() + risk_set_.size();
-  return stats;
 }
 
 void PerceptionMap::update_observation(VoxelData& d, const Eigen::Vector3d& centre, const Eigen::Vector3d& sensor,

@@ -107,6 +107,12 @@ class PerceptionMap {
     VoxelNode* node;
   };
 
+  // The steps of integrate(), in order (each says what it does where it is defined).
+  void group_points(const ScanPoints& scan, const BodyFilter& bodies, IntegrationStats& stats);
+  void fold_into_leaves(IntegrationStats& stats);
+  void update_metrics(const Eigen::Vector3d& sensor_origin, NeighbourLookup& lookup);
+  void refresh_terrain_around_new(NeighbourLookup& lookup);
+
   Eigen::Vector3d centre_of(const octomap::OcTreeKey& key) const;
   VoxelView view_of(const octomap::OcTreeKey& key, const VoxelData& d) const;
   void update_observation(VoxelData& d, const Eigen::Vector3d& centre, const Eigen::Vector3d& sensor,
