@@ -20,7 +20,7 @@
 
 #include "common/highlevel/contribution_log.h"
 #include "common/highlevel/map_fusion.h"
-#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/map_proto.h"
 #include "common/highlevel/segmenter.h"
 
 #include "tests/highlevel/synthetic_map.h"

@@ -28,7 +28,7 @@
 
 #include "common/core/team_config.h"
 #include "common/highlevel/map_fusion.h"
-#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/map_proto.h"
 #include "common/highlevel/segmenter.h"
 #include "common/perception/perception_map.h"
 #include "common/perception/voxel_proto.h"

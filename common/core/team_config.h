@@ -4,14 +4,15 @@
 // (see deploy/teams/*.yaml); defaults are the paper's parameter table.
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <limits>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+
+#include "common/core/liveness.h"
 
 namespace hexplore::core {
 
@@ -148,6 +149,8 @@ struct AlgorithmParams {
   double eta_r_m = 5.0;
   double eta_p_m = 2.0;
   double eta_t_s = 10.0;
+  // Seconds of silence after which a teammate counts as gone, per use (core/liveness.h).
+  LivenessParams liveness;
   // Genetic algorithm budget.
   int ga_population = 64;
   int ga_max_generations = 400;

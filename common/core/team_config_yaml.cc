@@ -179,11 +179,25 @@ void read_transport(const Reader& r, const YAML::Node& n, TransportConfig& t) {
   r.read(n, path, "linger_ms", t.linger_ms);
 }
 
+void read_liveness(const Reader& r, const YAML::Node& n, LivenessParams& l) {
+  const std::string path = "params.liveness";
+  r.only_keys(n, path, {"planning_team_s", "obstacle_s", "body_filter_s", "sim_body_s", "station_s"});
+  auto read_positive = [&](const char* key, double& out) {
+    r.read(n, path, key, out);
+    if (!(out > 0.0) || !std::isfinite(out)) r.fail(n[key], path + "." + key, "must be a positive number of seconds");
+  };
+  read_positive("planning_team_s", l.planning_team_s);
+  read_positive("obstacle_s", l.obstacle_s);
+  read_positive("body_filter_s", l.body_filter_s);
+  read_positive("sim_body_s", l.sim_body_s);
+  read_positive("station_s", l.station_s);
+}
+
 void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   const std::string path = "params";
   r.only_keys(n, path, {"map_resolution_m", "rho_th", "rho_measure", "min_ise_patch_voxels", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg", "shared_view_angle_margin_deg",
                         "beta_i", "beta_l", "beta_zeta", "beta_varsigma", "beta_e", "beta_c", "beta_m", "beta_d",
-                        "reference_window", "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "ga_population",
+                        "reference_window", "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "liveness", "ga_population",
                         "ga_max_generations", "ga_time_budget_s", "planner", "seed"});
   r.read(n, path, "map_resolution_m", p.map_resolution_m);
   r.read(n, path, "rho_th", p.rho_th);
@@ -220,6 +234,7 @@ void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   r.read(n, path, "eta_r_m", p.eta_r_m);
   r.read(n, path, "eta_p_m", p.eta_p_m);
   r.read(n, path, "eta_t_s", p.eta_t_s);
+  if (const auto l = n["liveness"]; l.IsDefined()) read_liveness(r, l, p.liveness);
   r.read(n, path, "ga_population", p.ga_population);
   r.read(n, path, "ga_max_generations", p.ga_max_generations);
   r.read(n, path, "ga_time_budget_s", p.ga_time_budget_s);

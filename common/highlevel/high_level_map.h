@@ -2,7 +2,7 @@
 // The fused high-level map a robot plans on: supervoxels by key (iterated in key order, the
 // same on every robot) plus the traversal-topology graph over the ground ones. It is fed by
 // MapUpdate batches: fused changes from MapFusion inside hlmap, or FusedMapUpdate messages
-// received by planning (see proto_convert.h). With clearance options (planning's map), every
+// received by planning (see map_proto.h). With clearance options (planning's map), every
 // graph vertex also carries its clearance from the facades around it and, per species, a
 // waypoint moved away from them (see clearance.h, topology_graph.h).
 

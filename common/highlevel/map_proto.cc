@@ -1,4 +1,4 @@
-#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/map_proto.h"
 
 #include <algorithm>
 

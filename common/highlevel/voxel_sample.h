@@ -1,6 +1,6 @@
 #pragma once
 // One perception-map voxel as the high-level map sees it: a plain mirror of hexplore.v1.Voxel
-// so the segmentation has no protobuf or socket dependency (conversion in proto_convert.h).
+// so the segmentation has no protobuf or socket dependency (conversion in map_proto.h).
 
 #include <cstdint>
 

@@ -1,26 +1,19 @@
-#include "services/safety/fragment_proto.h"
+#include "common/safety/fragment_proto.h"
+
+#include "common/radio/vec3_proto.h"
 
 namespace hexplore::safety {
-namespace {
 
-void set_vec(v1::Vec3* out, const Eigen::Vector3d& v) {
-  out->set_x(v.x());
-  out->set_y(v.y());
-  out->set_z(v.z());
-}
-
-Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
-}  // namespace
+using radio::vec;
 
 v1::PathFragment to_proto(const Fragment& fragment) {
   v1::PathFragment m;
-  set_vec(m.mutable_position_m(), fragment.position_m);
-  for (const auto& w : fragment.waypoints_m) set_vec(m.add_waypoints_m(), w);
+  radio::set(m.mutable_position_m(), fragment.position_m);
+  for (const auto& w : fragment.waypoints_m) radio::set(m.add_waypoints_m(), w);
   m.set_speed_mps(fragment.speed_mps);
   m.set_stationary(fragment.stationary);
-  set_vec(m.mutable_body_box_m()->mutable_min_m(), fragment.box_min_m);
-  set_vec(m.mutable_body_box_m()->mutable_max_m(), fragment.box_max_m);
+  radio::set(m.mutable_body_box_m()->mutable_min_m(), fragment.box_min_m);
+  radio::set(m.mutable_body_box_m()->mutable_max_m(), fragment.box_max_m);
   m.set_yielding_to(fragment.yielding_to);
   return m;
 }
@@ -45,7 +38,7 @@ v1::MotionCommand to_motion_command(const Decision& decision) {
     return m;
   }
   auto* follow = m.mutable_follow();
-  for (const auto& w : decision.waypoints) set_vec(follow->add_waypoints_m(), w);
+  for (const auto& w : decision.waypoints) radio::set(follow->add_waypoints_m(), w);
   follow->set_speed_mps(decision.speed_mps);
   return m;
 }

@@ -11,7 +11,7 @@ void MissionMonitor::on_planning_status(const std::string& robot, double sim_tim
 int MissionMonitor::live_robots(double sim_time_s) const {
   int live = 0;
   for (const auto& [_, report] : reports_)
-    if (sim_time_s - report.last_time_s <= options_.silent_after_s) ++live;
+    if (live_.fresh(sim_time_s - report.last_time_s)) ++live;
   return live;
 }
 
@@ -20,7 +20,7 @@ std::optional<std::string> MissionMonitor::check(double sim_time_s) {
   bool any_live = false;
   bool all_empty = true;
   for (const auto& [_, report] : reports_) {
-    if (sim_time_s - report.last_time_s > options_.silent_after_s) continue;
+    if (!live_.fresh(sim_time_s - report.last_time_s)) continue;
     any_live = true;
     if (report.views_remaining != 0) all_empty = false;
   }

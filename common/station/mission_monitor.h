@@ -8,18 +8,21 @@
 #include <optional>
 #include <string>
 
+#include "common/core/liveness.h"
+
 namespace hexplore::station {
 
 struct MissionMonitorOptions {
   double time_limit_s = 1800.0;
   double settle_s = 5.0;        // views must stay at zero this long before the mission ends
-  double silent_after_s = 10.0; // a robot with no planning status for this long is gone
+  double silent_after_s = 10.0; // a robot with no planning status for this long is gone (core/liveness.h)
   double min_time_s = 5.0;      // never declare completion before this sim time
 };
 
 class MissionMonitor {
  public:
-  explicit MissionMonitor(MissionMonitorOptions options) : options_(options) {}
+  // Throws std::invalid_argument unless silent_after_s is positive.
+  explicit MissionMonitor(MissionMonitorOptions options) : options_(options), live_(options.silent_after_s) {}
 
   // A planning status from `robot`: views it still sees in the (team-shared) map.
   void on_planning_status(const std::string& robot, double sim_time_s, int views_remaining);
@@ -37,6 +40,7 @@ class MissionMonitor {
   };
 
   MissionMonitorOptions options_;
+  core::Liveness live_;
   std::map<std::string, RobotReport> reports_;
   std::optional<double> all_empty_since_s_;
 };

@@ -6,7 +6,7 @@
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
 #include "common/core/log.h"
-#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/map_proto.h"
 #include "common/service/status_values.h"
 #include "common/transport/payload_wire.h"
 #include "common/transport/topics.h"

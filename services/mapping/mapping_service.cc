@@ -10,6 +10,7 @@
 #include "common/core/log.h"
 #include "common/perception/voxel_proto.h"
 #include "common/radio/pose_schedule.h"
+#include "common/radio/vec3_proto.h"
 #include "common/service/options.h"
 #include "common/service/status_values.h"
 #include "common/transport/topics.h"
@@ -23,7 +24,7 @@ std::chrono::nanoseconds seconds(double s) {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(s));
 }
 
-Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+using radio::vec;
 
 }  // namespace
 
@@ -35,7 +36,7 @@ MappingOptions MappingOptions::from_arguments(const std::map<std::string, std::s
   o.save_period_s = opts.number("save-period-s", o.save_period_s, 0.0);
   o.max_pose_jump_m = opts.number("max-pose-jump-m", o.max_pose_jump_m, 0.0);
   o.reanchor_after = opts.integer("reanchor-after", o.reanchor_after, 1);
-  o.teammate_timeout_s = opts.number("teammate-timeout-s", o.teammate_timeout_s, 0.0);
+  if (opts.has("teammate-timeout-s")) o.teammate_timeout_s = opts.positive("teammate-timeout-s", 1.0);
   o.map_file = opts.text("map-file", o.map_file);
   return o;
 }
@@ -44,6 +45,7 @@ void MappingService::setup(service::ServiceContext& context) {
   context_ = &context;
   robot_id_ = context.robot_id();
   options_ = MappingOptions::from_arguments(context.arguments());
+  body_filter_ = core::Liveness(options_.teammate_timeout_s.value_or(context.team().params.liveness.body_filter_s));
   perception::MapParams params;
   try {
     params = perception::make_map_params(context.team(), robot_id_);
@@ -194,7 +196,7 @@ void MappingService::on_scan(const std::string& sender, const v1::ScanFrame& fra
   std::vector<perception::OrientedBox> bodies;
   const int64_t now = context_->now_ns();
   for (const auto& [id, mate] : teammates_) {
-    if (core::ns_to_s(now - mate.received_ns) > options_.teammate_timeout_s) continue;
+    if (!body_filter_.fresh(core::ns_to_s(now - mate.received_ns))) continue;
     // Team poses come when dead reckoning says so: where the teammate is by this scan's time.
     // The sender lets the extrapolation drift by up to threshold_m before it sends again, so the
     // body is widened (horizontally) by that much while it is extrapolated.

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include "common/core/liveness.h"
 #include "common/metrics/registry.h"
 #include "common/perception/perception_map.h"
 #include "common/service/service.h"
@@ -29,7 +30,9 @@ struct MappingOptions {
   double save_period_s = 60.0;          // --save-period-s (0: only on shutdown)
   double max_pose_jump_m = 5.0;         // --max-pose-jump-m: sensor origin jump between scans
   int reanchor_after = 10;              // --reanchor-after: consistent jumped scans accepted as a relocation
-  double teammate_timeout_s = 10.0;     // --teammate-timeout-s: older teammate poses are not filtered
+  // --teammate-timeout-s: teammate poses older than this do not filter scans (default: the
+  // team file's params.liveness.body_filter_s, core/liveness.h).
+  std::optional<double> teammate_timeout_s;
 
   // Throws service::OptionError naming the option.
   static MappingOptions from_arguments(const std::map<std::string, std::string>& args);
@@ -63,6 +66,7 @@ class MappingService : public service::Service {
   service::ServiceContext* context_ = nullptr;
   std::string robot_id_;
   MappingOptions options_;
+  core::Liveness body_filter_{core::LivenessParams{}.body_filter_s};  // which teammate poses still filter scans
   std::unique_ptr<perception::PerceptionMap> map_;
   std::map<std::string, Teammate> teammates_;
   std::optional<Eigen::Vector3d> last_origin_;

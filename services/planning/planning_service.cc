@@ -10,7 +10,7 @@
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
 #include "common/core/log.h"
-#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/map_proto.h"
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/executable_path.h"
 #include "common/planning/hexplore_planner.h"
@@ -52,10 +52,7 @@ void PlanningService::setup(service::ServiceContext& context) {
   eta_t_s_ = team.params.eta_t_s;
   // Paths keep the bodies clear of the obstacles the map knows (common/highlevel/clearance.h).
   map_ = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team), highlevel::clearance_options(team));
-  for (const auto& r : team.robots) {
-    positions_[r.id] = r.start_position_m;
-    heard_ns_[r.id] = context.now_ns();  // a teammate gets peer_timeout_s to show up
-  }
+  for (const auto& r : team.robots) positions_[r.id] = r.start_position_m;
 
   const service::Options opts(context.arguments());
   if (const std::string dir = opts.text("trace-dir"); !dir.empty()) {
@@ -68,7 +65,8 @@ void PlanningService::setup(service::ServiceContext& context) {
   mission_ = service::MissionState(opts.flag("wait-for-start", false));
   const double cycle_ms = opts.positive("cycle-ms", 200.0);
   min_replan_s_ = opts.positive("min-replan-s", 1.0);
-  peer_timeout_s_ = opts.positive("peer-timeout-s", 5.0);
+  teammates_ = core::Liveness(opts.positive("peer-timeout-s", team.params.liveness.planning_team_s));
+  for (const auto& r : team.robots) teammates_.heard(r.id, context.now_ns());  // time to show up
   species_index_ = team.species_index(species->name).value_or(0);
   ExecutionOptions exec =
       execution_options(opts, *species, capabilities_.species[size_t(species_index_)], options_);
@@ -127,7 +125,7 @@ void PlanningService::setup(service::ServiceContext& context) {
     const std::string& id = r.header.robot_id();
     if (!context_->team().find_robot(id)) return;
     positions_[id] = position_of(r.message);
-    heard_ns_[id] = context_->now_ns();
+    teammates_.heard(id, context_->now_ns());
     if (id == robot_id_) return;
     // A teammate that stops moving and goes idle has finished its route.
     const int state = r.message.state();
@@ -235,7 +233,7 @@ std::vector<planning::RobotState> PlanningService::team_states(int& self) const 
   self = 0;
   for (const auto& r : team.robots) {
     const bool me = r.id == robot_id_;
-    if (!me && core::ns_to_s(now - heard_ns_.at(r.id)) > peer_timeout_s_) continue;  // gone silent: not in the team
+    if (!me && !teammates_.alive(r.id, now)) continue;  // gone silent: not in the team
     if (!me && peer_moved_ns_.count(r.id) && core::ns_to_s(now_ns() - peer_moved_ns_.at(r.id)) > peer_stuck_s_)
       continue;  // trying to move for long without moving: stuck, its work goes to the others
     if (me) self = int(out.size());
@@ -253,7 +251,7 @@ std::unordered_set<uint64_t> PlanningService::avoided_vertices() const {
   const double own_radius = own ? radii[size_t(*own)] : 0.0;
   std::vector<uint64_t> keys;
   for (const auto& r : team.robots) {
-    if (r.id == robot_id_ || core::ns_to_s(now - heard_ns_.at(r.id)) <= peer_timeout_s_) continue;
+    if (r.id == robot_id_ || teammates_.alive(r.id, now)) continue;
     const auto species = team.species_index(r.species);
     const double reach = own_radius + (species ? radii[size_t(*species)] : 0.0);
     if (keys.empty()) keys = map_->graph().vertex_keys();

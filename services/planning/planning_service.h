@@ -7,7 +7,8 @@
 // paths and sensor aims go to its safety. The active planner comes from the config and can
 // be switched at run time by a MissionCommand. It answers OpenTargetsRequest with why the
 // remaining coverage targets are still open (common/planning/open_targets.h).
-// Robustness: teammates not heard from for --peer-timeout-s, or trying to move without moving
+// Robustness: teammates not heard from for params.liveness.planning_team_s (core/liveness.h;
+// --peer-timeout-s overrides it), or trying to move without moving
 // for --peer-stuck-s, leave the team of the next round (their clusters go to the others).
 // Targets that stay incomplete after being observed are given up (GiveUpLedger), and the
 // given-up set travels with the team solution, so every planner agrees on what is left.
@@ -18,12 +19,13 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 #include <unordered_map>
 #include <unordered_set>
+#include <vector>
 
 #include <Eigen/Core>
 
+#include "common/core/liveness.h"
 #include "common/highlevel/high_level_map.h"
 #include "common/planning/give_up_ledger.h"
 #include "common/planning/passing_observer.h"
@@ -43,7 +45,7 @@ class PlanningService : public service::Service {
   core::ServiceKind kind() const override { return core::ServiceKind::kPlanning; }
   // Options (after --config/--robot): --wait-for-start true|false (default false),
   // --cycle-ms N (trigger check period, default 200), --min-replan-s X (default 1.0),
-  // --peer-timeout-s X (default 5.0, wall time), --peer-stuck-s X (default 30.0); the
+  // --peer-timeout-s X (default params.liveness.planning_team_s), --peer-stuck-s X (default 30.0); the
   // follower's --reach-m X (1.0), --blocked-s X (2.0), --stuck-s X (8.0), --settle-s X (2.0),
   // --keep-stretch-m X (5.0; under --reach-m keeps only the leg), --observe true|false (dwell at facade views, default true); the ledger's
   // --give-up-views N (2) and --give-up-attempts N (3); --trace-dir DIR (per-round traces).
@@ -94,7 +96,7 @@ class PlanningService : public service::Service {
   std::map<std::string, planning::ReferenceSolution> shared_;  // source robot -> solution
   bool peer_finished_ = false;                        // a teammate went idle (route done)
   std::map<std::string, int> peer_motion_;            // robot id -> last v1::MotionState
-  std::map<std::string, int64_t> heard_ns_;           // robot id -> loop-clock time of its last pose
+  core::Liveness teammates_{core::LivenessParams{}.planning_team_s};  // heard from by team/pose
   std::map<std::string, Eigen::Vector3d> peer_anchor_;  // robot id -> where it last moved 0.5 m from
   std::map<std::string, int64_t> peer_moved_ns_;      // robot id -> now_ns() when it got there
   planning::GiveUpLedger ledger_;                     // targets given up by us and the team
@@ -116,7 +118,6 @@ class PlanningService : public service::Service {
   double eta_t_s_ = 10.0;
   double min_replan_s_ = 1.0;
   double speed_mps_ = 0.5;
-  double peer_timeout_s_ = 5.0;
   double peer_stuck_s_ = 30.0;
 
   metrics::Histogram* stage_views_ = nullptr;

@@ -6,18 +6,19 @@
 #include "common/core/config_error.h"
 #include "common/core/log.h"
 #include "common/radio/pose_schedule.h"
+#include "common/radio/vec3_proto.h"
+#include "common/safety/fragment_proto.h"
 #include "common/service/mission_state.h"
 #include "common/service/options.h"
 #include "common/service/status_values.h"
 #include "common/transport/topics.h"
-#include "services/safety/fragment_proto.h"
 
 namespace hexplore::safety {
 namespace {
 
 namespace topics = transport::topics;
 
-Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+using radio::vec;
 
 // Where a driver's pose, `age_s` old, puts the teammate now (along its velocity).
 Eigen::Vector3d position_now(const v1::RobotPose& pose, double age_s) {
@@ -74,7 +75,9 @@ void SafetyService::setup(service::ServiceContext& context) {
   sharing.heartbeat_s = context.team().params.eta_c_s;
   sharing.eta_p_m = options.eta_p_m;
   sharing_ = FragmentSchedule(sharing);
-  peer_timeout_s_ = std::max(peer_timeout_s_, 2.0 * sharing.heartbeat_s + 0.5);
+  // Fragments arrive once per eta_c while nothing changes: one lost heartbeat, plus latency,
+  // must not make a teammate look silent.
+  obstacles_ = core::Liveness(std::max(context.team().params.liveness.obstacle_s, 2.0 * sharing.heartbeat_s + 0.5));
 
   const service::Options opts(context.arguments());
   sim_clock_ = opts.choice("decision-clock", sim_clock_ ? "sim" : "wall", {"sim", "wall"}) == "sim";
@@ -207,7 +210,7 @@ double SafetyService::age_s(int64_t received_ns, int64_t sent_sim_ns) const {
 }
 
 bool SafetyService::stale(int64_t received_ns, int64_t sent_sim_ns) const {
-  return age_s(received_ns, sent_sim_ns) > peer_timeout_s_;
+  return !obstacles_.fresh(age_s(received_ns, sent_sim_ns));
 }
 
 Eigen::Vector3d SafetyService::half_extents_of(const std::string& id) const {

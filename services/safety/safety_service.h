@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include "common/core/liveness.h"
 #include "common/safety/fragment_sharing.h"
 #include "common/safety/resolver.h"
 #include "common/service/mission_state.h"
@@ -74,9 +75,8 @@ class SafetyService : public service::Service {
   std::string robot_id_;
   std::unique_ptr<ConflictResolver> resolver_;
   double default_speed_mps_ = 0.5;
-  // Fragments arrive once per eta_c while nothing changes: one lost heartbeat, plus latency,
-  // must not make a teammate look silent.
-  double peer_timeout_s_ = 2.5;
+  // How old a teammate's fragment or pose may be to move it (params.liveness.obstacle_s).
+  core::Liveness obstacles_{core::LivenessParams{}.obstacle_s};
   FragmentSchedule sharing_;
   std::optional<Eigen::Vector3d> position_;
   int64_t sim_time_ns_ = 0;

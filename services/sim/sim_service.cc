@@ -10,11 +10,13 @@
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
 #include "common/core/log.h"
+#include "common/radio/vec3_proto.h"
 #include "common/service/options.h"
 #include "common/service/status_values.h"
 #include "common/sim/mesh_io.h"
 #include "common/sim/rng.h"
 #include "common/sim/scene_error.h"
+#include "common/sim/sim_proto.h"
 #include "common/transport/topics.h"
 
 namespace hexplore::sim {
@@ -22,50 +24,9 @@ namespace {
 
 namespace topics = transport::topics;
 
-constexpr int64_t kTeammateTimeoutNs = 2'000'000'000;  // a proxy whose sim went silent is dropped
-
-void set_vec(v1::Vec3* out, const Eigen::Vector3d& v) {
-  out->set_x(v.x());
-  out->set_y(v.y());
-  out->set_z(v.z());
-}
-
-Eigen::Vector3d vec(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
-void set_pose(v1::Pose* out, const Eigen::Isometry3d& pose) {
-  set_vec(out->mutable_position_m(), pose.translation());
-  const Eigen::Quaterniond q(pose.linear());
-  out->mutable_orientation()->set_w(q.w());
-  out->mutable_orientation()->set_x(q.x());
-  out->mutable_orientation()->set_y(q.y());
-  out->mutable_orientation()->set_z(q.z());
-}
+using radio::vec;
 
 }  // namespace
-
-v1::MotionState to_proto(MotionState state) {
-  switch (state) {
-    case MotionState::kIdle: return v1::MOTION_STATE_IDLE;
-    case MotionState::kMoving: return v1::MOTION_STATE_MOVING;
-    case MotionState::kStopped: return v1::MOTION_STATE_STOPPED;
-    case MotionState::kBlocked: return v1::MOTION_STATE_BLOCKED;
-    case MotionState::kEmergencyStop: return v1::MOTION_STATE_EMERGENCY_STOP;
-  }
-  return v1::MOTION_STATE_UNSPECIFIED;
-}
-
-v1::ScanFrame to_scan_frame(const LidarScan& scan, const Eigen::Isometry3d& body_pose, double max_range_m) {
-  v1::ScanFrame frame;
-  frame.set_sensor_name(scan.sensor_name);
-  set_vec(frame.mutable_sensor_origin_m(), scan.origin);
-  set_pose(frame.mutable_body_pose(), body_pose);
-  // Eigen::Vector3f is three packed floats; the wire format is little-endian float32 (x86/ARM).
-  static_assert(sizeof(Eigen::Vector3f) == 12);
-  frame.mutable_points_xyz_f32()->assign(reinterpret_cast<const char*>(scan.points.data()), scan.points.size() * 12);
-  frame.set_point_count(static_cast<uint32_t>(scan.points.size()));
-  frame.set_max_range_m(max_range_m);
-  return frame;
-}
 
 SimOptions SimOptions::from_arguments(const std::map<std::string, std::string>& args) {
   const service::Options opts(args);
@@ -97,6 +58,7 @@ void SimService::setup(service::ServiceContext& context) {
   if (!robot || !species) throw core::ConfigError(context.team().source_file, "robots", "sim needs a robot of the team");
 
   const SimOptions options = SimOptions::from_arguments(context.arguments());
+  bodies_ = core::Liveness(context.team().params.liveness.sim_body_s);
   const double rtf = options.real_time_factor;
   clock_ = SimClock(rtf);
   step_ns_ = static_cast<int64_t>(1e9 / options.step_hz);
@@ -230,7 +192,7 @@ std::vector<ProxyBox> SimService::live_teammates() const {
   std::vector<ProxyBox> out;
   const int64_t now = context_->now_ns();
   for (const auto& [id, t] : teammates_)
-    if (now - t.received_ns < kTeammateTimeoutNs) out.push_back(t.box);
+    if (bodies_.fresh(core::ns_to_s(now - t.received_ns))) out.push_back(t.box);
   return out;
 }
 
@@ -293,9 +255,9 @@ void SimService::scan_all() {
 void SimService::publish_pose() {
   v1::RobotPose pose;
   set_pose(pose.mutable_pose(), motion_->body_pose());
-  set_vec(pose.mutable_velocity_mps(), motion_->velocity());
+  radio::set(pose.mutable_velocity_mps(), motion_->velocity());
   pose.set_state(to_proto(motion_->state()));
-  set_vec(pose.mutable_body_half_extents_m(), motion_->species().body_half_extents_m);
+  radio::set(pose.mutable_body_half_extents_m(), motion_->species().body_half_extents_m);
   pose.set_odometry_m(motion_->odometry_m());
   pose.set_collisions(motion_->collisions());
   auto& pub = context_->publisher();

@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include "common/core/liveness.h"
 #include "common/radio/pose_schedule.h"
 #include "common/service/mission_state.h"
 #include "common/service/service.h"
@@ -78,6 +79,7 @@ class SimService : public service::Service {
   service::MissionState mission_;  // what the station's commands asked of this robot
   std::vector<Sensor> sensors_;
   std::map<std::string, Teammate> teammates_;
+  core::Liveness bodies_{core::LivenessParams{}.sim_body_s};  // a proxy whose sim went silent goes
   std::optional<Eigen::Vector3d> look_at_;
   SimClock clock_;
   int64_t step_ns_ = 50'000'000;
@@ -96,9 +98,5 @@ class SimService : public service::Service {
   metrics::Gauge* position_m_[3] = {nullptr, nullptr, nullptr};  // x, y, z
   std::map<MotionState, metrics::Gauge*> motion_state_;         // 1 for the current state
 };
-
-// ScanFrame / RobotPose messages from the simulator's types (exposed for tests).
-v1::ScanFrame to_scan_frame(const LidarScan& scan, const Eigen::Isometry3d& body_pose, double max_range_m);
-v1::MotionState to_proto(MotionState state);
 
 }  // namespace hexplore::sim

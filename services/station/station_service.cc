@@ -103,7 +103,8 @@ void StationService::setup(service::ServiceContext& context) {
   MissionMonitorOptions monitor;
   monitor.time_limit_s = context.team().time_limit_s;
   monitor.settle_s = options_.settle_s;
-  monitor.silent_after_s = std::max(10.0, 2.0 * context.team().params.eta_t_s);
+  // Never shorter than two route time-outs: a robot may stay silent on planning that long.
+  monitor.silent_after_s = std::max(context.team().params.liveness.station_s, 2.0 * context.team().params.eta_t_s);
   monitor_ = std::make_unique<MissionMonitor>(monitor);
   gauges_ = std::make_unique<StationGauges>(context.metrics(), context.team());
 

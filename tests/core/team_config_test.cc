@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <stdexcept>
+
 #include "common/core/config_error.h"
+#include "common/core/liveness.h"
 #include "common/core/team_config.h"
 
 namespace hexplore::core {
@@ -94,12 +98,6 @@ TEST(TeamConfig, MissingFileIsNamed) {
   }
 }
 
-}  // namespace
-}  // namespace hexplore::core
-
-namespace hexplore::core {
-namespace {
-
 TEST(TeamConfig, ExplorationRegionIsReadAndChecked) {
   const std::string base = "species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}]\n";
   EXPECT_FALSE(parse_team_config(base, "t").exploration_region.isEmpty());
@@ -177,6 +175,44 @@ TEST(TeamConfig, RadioModelIsReadAndChecked) {
       EXPECT_EQ(e.line(), 5) << text;
     }
   }
+}
+
+TEST(TeamConfig, LivenessTimeoutsAreReadAndChecked) {
+  const std::string base = "species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}]\n";
+  const LivenessParams defaults = parse_team_config(base, "t").params.liveness;
+  EXPECT_DOUBLE_EQ(defaults.planning_team_s, 5.0);
+  EXPECT_DOUBLE_EQ(defaults.obstacle_s, 2.5);
+  const auto c = parse_team_config(base + "params:\n  liveness:\n    planning_team_s: 7\n    sim_body_s: 1.5\n", "t");
+  EXPECT_DOUBLE_EQ(c.params.liveness.planning_team_s, 7.0);
+  EXPECT_DOUBLE_EQ(c.params.liveness.sim_body_s, 1.5);
+  EXPECT_DOUBLE_EQ(c.params.liveness.station_s, defaults.station_s);  // unlisted keys keep their default
+  const std::pair<const char*, const char*> bad[] = {{"    planning_team: 7", "params.liveness.planning_team"},
+                                                     {"    obstacle_s: 0", "params.liveness.obstacle_s"},
+                                                     {"    station_s: -3", "params.liveness.station_s"},
+                                                     {"    body_filter_s: .inf", "params.liveness.body_filter_s"}};
+  for (const auto& [text, key] : bad) {
+    try {
+      parse_team_config(base + "params:\n  liveness:\n" + text + "\n", "t.yaml");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const ConfigError& e) {
+      EXPECT_EQ(e.key(), key) << text;
+      EXPECT_EQ(e.line(), 5) << text;
+    }
+  }
+}
+
+TEST(Liveness, ATeammateIsAliveWhileHeardWithinItsTimeout) {
+  Liveness team(2.0);
+  EXPECT_FALSE(team.alive("a", 0));  // never heard
+  team.heard("a", 1'000'000'000);
+  EXPECT_TRUE(team.alive("a", 3'000'000'000));   // exactly the time-out: still alive
+  EXPECT_FALSE(team.alive("a", 3'000'000'001));  // then gone
+  team.heard("a", 3'500'000'000);                // heard again: back
+  EXPECT_TRUE(team.alive("a", 4'000'000'000));
+  EXPECT_TRUE(team.fresh(2.0));
+  EXPECT_FALSE(team.fresh(2.1));
+  EXPECT_THROW(Liveness(0.0), std::invalid_argument);
+  EXPECT_THROW(Liveness(std::nan("")), std::invalid_argument);
 }
 
 }  // namespace

@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "common/highlevel/high_level_map.h"
-#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/map_proto.h"
 #include "common/highlevel/segmenter.h"
 #include "common/perception/perception_map.h"
 #include "common/perception/voxel_proto.h"
@@ -115,7 +115,9 @@ TEST(ClimbGraph, MultiStoreyRampsAndStairsConnectTheFloorsForTheTrackedSpeciesOn
     }
     EXPECT_GT(between, 5) << climb.name;
     const auto wheeled_from = g.nearest(below, kMr1000);
-    if (wheeled_from) EXPECT_EQ(g.dist(*wheeled_from, *to, kMr1000), highlevel::TopologyGraph::kUnreachable) << climb.name;
+    if (wheeled_from) {
+      EXPECT_EQ(g.dist(*wheeled_from, *to, kMr1000), highlevel::TopologyGraph::kUnreachable) << climb.name;
+    }
   }
 }
 

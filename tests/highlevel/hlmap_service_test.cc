@@ -20,7 +20,7 @@
 #include "common/core/endpoints.h"
 #include "common/core/team_config.h"
 #include "common/highlevel/high_level_map.h"
-#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/map_proto.h"
 #include "common/transport/context.h"
 #include "common/transport/publisher.h"
 #include "common/transport/request_reply.h"

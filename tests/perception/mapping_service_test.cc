@@ -196,7 +196,7 @@ TEST_F(MappingServiceTest, SavesOnShutdownAndResumesFromTheMapFile) {
   ASSERT_TRUE(std::filesystem::exists(path));
   start({{"map-file", path}, {"full-snapshot-period-s", "0.2"}});
   // The resumed map reaches a late-joining hlmap whole, through the periodic full snapshot.
-  ASSERT_TRUE(until([] {}, [&] { return full_snapshots_ > 0 && voxels_.size() * 3 == before->keys_xyz().size(); }));
+  ASSERT_TRUE(until([] {}, [&] { return full_snapshots_ > 0 && voxels_.size() * 3 == size_t(before->keys_xyz().size()); }));
   const auto after = occupied();
   ASSERT_TRUE(after.has_value());
   std::multiset<int> a(before->keys_xyz().begin(), before->keys_xyz().end());

@@ -74,10 +74,14 @@ TEST(Observation, DistanceThresholdIsTheOwnSpeciesRange) {
   slugcat.integrate(scan_of(dense, {1.5, 15, 1}), {});
   mr1000.integrate(scan_of(dense, {1.5, 15, 1}), {});
   for (const VoxelView& v : slugcat.voxels()) {
-    if (interior(v)) EXPECT_FALSE(v.covered());
+    if (interior(v)) {
+      EXPECT_FALSE(v.covered());
+    }
   }
   for (const VoxelView& v : mr1000.voxels()) {
-    if (interior(v)) EXPECT_TRUE(v.covered());
+    if (interior(v)) {
+      EXPECT_TRUE(v.covered());
+    }
   }
 }
 
@@ -167,7 +171,9 @@ TEST(Observation, FusedSurfaceDensityIsThePointsPerAreaWhereAWallSplitsAcrossVox
       if (!interior(v)) continue;
       ++interior_voxels;
       complete += v.covered() ? 1 : 0;
-      if (density == MapParams::Density::kFusedSurface) EXPECT_NEAR(v.observation_density, 0.5, 0.1);
+      if (density == MapParams::Density::kFusedSurface) {
+        EXPECT_NEAR(v.observation_density, 0.5, 0.1);
+      }
     }
     ASSERT_GT(interior_voxels, 200) << "both layers of voxels hold points";
     if (density == MapParams::Density::kAllPoints) EXPECT_EQ(complete, 0) << "half the points per voxel face";

@@ -13,7 +13,7 @@
 
 #include "common/core/endpoints.h"
 #include "common/core/team_config.h"
-#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/map_proto.h"
 #include "common/service/options.h"
 #include "common/service/service.h"
 #include "common/transport/publisher.h"

@@ -360,7 +360,9 @@ TEST(RouteFollower, AViewCutOffByASilentTeammateCountsAnAttemptEachRound) {
     f.set_route({beyond}, {1.5, 1.5, 0}, d.map);
     EXPECT_FALSE(f.step(double(round), {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
     EXPECT_TRUE(f.finished());
-    if (round < rounds) EXPECT_EQ(d.ledger.attempts(target), round);
+    if (round < rounds) {
+      EXPECT_EQ(d.ledger.attempts(target), round);
+    }
   }
   EXPECT_EQ(f.counters().views_cut_off, rounds);
   EXPECT_TRUE(d.ledger.given_up(target, d.map.find(target)->voxel_count));

@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "common/highlevel/proto_convert.h"
+#include "common/highlevel/map_proto.h"
 #include "common/highlevel/supervoxel.h"
 #include "common/highlevel/wire_precision.h"
 #include "common/radio/map_codec.h"

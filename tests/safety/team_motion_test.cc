@@ -461,12 +461,15 @@ TEST(TeamMotion, RandomTeamsOnASlowRadioNeverCollide) {
                                      << ": gap " << result.min_gap;
       if (!result.all_arrived) {
         ++stuck;
-        if (radio.loss == 0.0)
+        if (radio.loss == 0.0) {
           ADD_FAILURE() << "seed " << seed << ", latency " << radio.latency_s
                         << " s: not all robots arrived by t=" << result.end_time;
+        }
       }
     }
-    if (radio.loss > 0.0) EXPECT_LE(stuck, 2) << "latency " << radio.latency_s << " s, loss " << radio.loss;
+    if (radio.loss > 0.0) {
+      EXPECT_LE(stuck, 2) << "latency " << radio.latency_s << " s, loss " << radio.loss;
+    }
   }
 }
 

@@ -229,7 +229,7 @@ TEST(RobotMotion, TurningNextToAnOverhangNeverPutsTheBodyUnderIt) {
   vehicle.center = {2, 1, 0.75};
   vehicle.half_extents = {2, 1, 0.45};
   const auto species = core::builtin_slugcat();
-  for (const Eigen::Vector3d goal : {Eigen::Vector3d(2, -3, 0), Eigen::Vector3d(2.5, 3, 0), Eigen::Vector3d(-1, -2, 0)}) {
+  for (const Eigen::Vector3d& goal : {Eigen::Vector3d(2, -3, 0), Eigen::Vector3d(2.5, 3, 0), Eigen::Vector3d(-1, -2, 0)}) {
     RobotMotion robot(caster, species, {2, -0.4, 0}, 0.0);
     robot.follow({goal});
     for (double t = 0; t < 30 && robot.state() == MotionState::kMoving; t += 0.1) {

@@ -56,8 +56,9 @@ TEST(Scenes, UnknownNameListsTheKnownOnes) {
 TEST(Scenes, MeshPathsResolveBesideTheTeamFile) {
   EXPECT_EQ(resolve_scene("single-building", "/a/team.yaml"), "single-building");
   const std::string shared = std::string(HEXPLORE_SHARED_DIR) + "/scenes/collapsed_town_osrf/";
-  if (std::filesystem::exists(shared + "collapsed_town.ply"))
+  if (std::filesystem::exists(shared + "collapsed_town.ply")) {
     EXPECT_EQ(resolve_scene("collapsed_town.ply", shared + "team.yaml"), shared + "collapsed_town.ply");
+  }
   EXPECT_EQ(resolve_scene("missing.ply", "/nowhere/team.yaml"), "missing.ply");  // load_scene then names it
 }
 
