@@ -11,7 +11,7 @@
 #include "common/transport/payload_wire.h"
 #include "common/transport/topics.h"
 
-namespace hexplore::hlmap {
+namespace hexplore::hlmap_service {
 namespace {
 
 namespace topics = transport::topics;
@@ -264,4 +264,4 @@ void HlmapService::fill_status(v1::ServiceStatus& status) {
   add("full_map_bytes", full_map_bytes_);
 }
 
-}  // namespace hexplore::hlmap
+}  // namespace hexplore::hlmap_service

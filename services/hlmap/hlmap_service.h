@@ -17,7 +17,7 @@
 #include "hexplore/v1/hlmap.pb.h"
 #include "hexplore/v1/voxels.pb.h"
 
-namespace hexplore::hlmap {
+namespace hexplore::hlmap_service {
 
 class HlmapService : public service::Service {
  public:
@@ -76,4 +76,4 @@ class HlmapService : public service::Service {
   highlevel::PeerSyncStats reported_;  // sync stats already added to the counters
 };
 
-}  // namespace hexplore::hlmap
+}  // namespace hexplore::hlmap_service

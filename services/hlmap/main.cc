@@ -6,5 +6,5 @@
 
 int main(int argc, char** argv) {
   return hexplore::service::run_service_main(argc, argv,
-                                             [] { return std::make_unique<hexplore::hlmap::HlmapService>(); });
+                                             [] { return std::make_unique<hexplore::hlmap_service::HlmapService>(); });
 }

@@ -8,5 +8,5 @@
 
 int main(int argc, char** argv) {
   return hexplore::service::run_service_main(
-      argc, argv, [] { return std::make_unique<hexplore::mapping::MappingService>(); });
+      argc, argv, [] { return std::make_unique<hexplore::mapping_service::MappingService>(); });
 }

@@ -15,7 +15,7 @@
 #include "common/service/status_values.h"
 #include "common/transport/topics.h"
 
-namespace hexplore::mapping {
+namespace hexplore::mapping_service {
 namespace {
 
 namespace topics = transport::topics;
@@ -281,4 +281,4 @@ void MappingService::save_map() {
   }
 }
 
-}  // namespace hexplore::mapping
+}  // namespace hexplore::mapping_service

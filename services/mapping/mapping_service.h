@@ -20,7 +20,7 @@
 #include "hexplore/v1/scan.pb.h"
 #include "hexplore/v1/voxels.pb.h"
 
-namespace hexplore::mapping {
+namespace hexplore::mapping_service {
 
 // Service options, from "--name value" arguments (defaults in brackets).
 struct MappingOptions {
@@ -95,4 +95,4 @@ class MappingService : public service::Service {
   metrics::Counter* saves_failed_ = nullptr;
 };
 
-}  // namespace hexplore::mapping
+}  // namespace hexplore::mapping_service

@@ -6,5 +6,5 @@
 
 int main(int argc, char** argv) {
   return hexplore::service::run_service_main(
-      argc, argv, [] { return std::make_unique<hexplore::safety::SafetyService>(); });
+      argc, argv, [] { return std::make_unique<hexplore::safety_service::SafetyService>(); });
 }

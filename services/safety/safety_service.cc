@@ -13,7 +13,7 @@
 #include "common/service/status_values.h"
 #include "common/transport/topics.h"
 
-namespace hexplore::safety {
+namespace hexplore::safety_service {
 namespace {
 
 namespace topics = transport::topics;
@@ -28,9 +28,9 @@ Eigen::Vector3d position_now(const v1::RobotPose& pose, double age_s) {
 
 // A teammate heard only through its driver's pose (its safety service is silent): moving along
 // its velocity from where the pose puts it now, or standing still.
-Fragment fragment_from_pose(const std::string& id, const v1::RobotPose& pose, const Eigen::Vector3d& half_extents,
+safety::Fragment fragment_from_pose(const std::string& id, const v1::RobotPose& pose, const Eigen::Vector3d& half_extents,
                             double age_s, double eta_p_m) {
-  Fragment f;
+  safety::Fragment f;
   f.robot_id = id;
   f.position_m = position_now(pose, age_s);
   Eigen::Vector3d v = vec(pose.velocity_mps());
@@ -43,13 +43,13 @@ Fragment fragment_from_pose(const std::string& id, const v1::RobotPose& pose, co
   }
   Eigen::Vector3d half = vec(pose.body_half_extents_m());
   if (half.minCoeff() <= 0.0) half = half_extents;
-  body_box_any_yaw(f.position_m, half, f.box_min_m, f.box_max_m);
+  safety::body_box_any_yaw(f.position_m, half, f.box_min_m, f.box_max_m);
   return f;
 }
 
 // A fragment moved to where the teammate was measured: the box goes with it, and the trail
 // keeps the predicted place too (hold-off keeps clear of both and everything between).
-void move_to_measured(Fragment& f, const Eigen::Vector3d& measured) {
+void move_to_measured(safety::Fragment& f, const Eigen::Vector3d& measured) {
   if (f.trail_m.empty()) f.trail_m.push_back(f.position_m);
   f.trail_m.push_back(measured);
   const Eigen::Vector3d moved = measured - f.position_m;
@@ -68,13 +68,13 @@ void SafetyService::setup(service::ServiceContext& context) {
                                                   "safety: robot has no known species");
   default_speed_mps_ = species->speed_mps;
 
-  SafetyOptions options;
+  safety::SafetyOptions options;
   options.eta_p_m = context.team().params.eta_p_m;
-  resolver_ = std::make_unique<ConflictResolver>(robot_id_, species->body_half_extents_m, options);
-  SharingOptions sharing;
+  resolver_ = std::make_unique<safety::ConflictResolver>(robot_id_, species->body_half_extents_m, options);
+  safety::SharingOptions sharing;
   sharing.heartbeat_s = context.team().params.eta_c_s;
   sharing.eta_p_m = options.eta_p_m;
-  sharing_ = FragmentSchedule(sharing);
+  sharing_ = safety::FragmentSchedule(sharing);
   // Fragments arrive once per eta_c while nothing changes: one lost heartbeat, plus latency,
   // must not make a teammate look silent.
   obstacles_ = core::Liveness(std::max(context.team().params.liveness.obstacle_s, 2.0 * sharing.heartbeat_s + 0.5));
@@ -124,10 +124,10 @@ void SafetyService::setup(service::ServiceContext& context) {
     const std::string& id = r.header.robot_id();
     if (id == robot_id_ || id.empty()) return;
     Peer& peer = peers_[id];
-    peer.fragment = from_proto(r.message, id);
+    peer.fragment = safety::from_proto(r.message, id);
     if (!r.message.has_body_box_m()) {
       // The radio leaves the box out: it is the sender's species body around its position.
-      body_box_any_yaw(peer.fragment->position_m, half_extents_of(id), peer.fragment->box_min_m, peer.fragment->box_max_m);
+      safety::body_box_any_yaw(peer.fragment->position_m, half_extents_of(id), peer.fragment->box_min_m, peer.fragment->box_max_m);
     }
     peer.fragment_ns = context_->now_ns();
     peer.fragment_sim_ns = r.header.sim_time_ns();
@@ -195,11 +195,11 @@ void SafetyService::on_mission(const v1::MissionCommand& command) {
 
 void SafetyService::halt(const std::string& reason) {
   resolver_->reset();
-  Decision stop;
-  stop.kind = DecisionKind::kStop;
+  safety::Decision stop;
+  stop.kind = safety::DecisionKind::kStop;
   stop.reason = reason;
   last_ = stop;
-  publish(to_motion_command(stop));
+  publish(safety::to_motion_command(stop));
   if (position_) share_fragment();
 }
 
@@ -225,12 +225,12 @@ bool SafetyService::pose_is_newer(const Peer& peer) const {
   return peer.pose_ns > peer.fragment_ns;
 }
 
-std::vector<Fragment> SafetyService::peers() const {
-  std::vector<Fragment> out;
+std::vector<safety::Fragment> SafetyService::peers() const {
+  std::vector<safety::Fragment> out;
   for (const auto& [id, peer] : peers_) {
     if (peer.fragment && !stale(peer.fragment_ns, peer.fragment_sim_ns)) {
       // Where the teammate is by now, driving the path it shared.
-      Fragment f = advance_fragment(*peer.fragment, age_s(peer.fragment_ns, peer.fragment_sim_ns),
+      safety::Fragment f = safety::advance_fragment(*peer.fragment, age_s(peer.fragment_ns, peer.fragment_sim_ns),
                                     resolver_->options().eta_p_m);
       if (peer.pose && pose_is_newer(peer)) {
         // Its driver has spoken since: the body is where the pose puts it (a stop decided a
@@ -240,7 +240,7 @@ std::vector<Fragment> SafetyService::peers() const {
       }
       out.push_back(std::move(f));
     } else if (peer.pose) {
-      Fragment f = fragment_from_pose(id, *peer.pose, half_extents_of(id), age_s(peer.pose_ns, peer.pose_sim_ns),
+      safety::Fragment f = fragment_from_pose(id, *peer.pose, half_extents_of(id), age_s(peer.pose_ns, peer.pose_sim_ns),
                                       resolver_->options().eta_p_m);
       if (stale(peer.pose_ns, peer.pose_sim_ns)) {
         // Silent (radio or services gone): its body is still where it was last seen, and it
@@ -262,12 +262,12 @@ void SafetyService::cycle() {
   }
   if (!mission_.active()) {
     // Repeat the stop: a driver that missed the first one still halts within a cycle.
-    publish(to_motion_command(last_));
+    publish(safety::to_motion_command(last_));
     share_fragment();
     context_->set_state(v1::SERVICE_STATE_RUNNING, mission_.reason());
     return;
   }
-  const Decision decision =
+  const safety::Decision decision =
       resolver_->decide(*position_, desired_, path_speed_mps_, peers(), now_s());
   if (decision.yielding_to != last_.yielding_to) {
     // Waiting starts and ends are rare and worth seeing in the log; every decision is not.
@@ -278,8 +278,8 @@ void SafetyService::cycle() {
     }
   }
   last_ = decision;
-  v1::MotionCommand command = to_motion_command(decision);
-  if (decision.kind == DecisionKind::kFollow && look_at_) {
+  v1::MotionCommand command = safety::to_motion_command(decision);
+  if (decision.kind == safety::DecisionKind::kFollow && look_at_) {
     auto* follow = command.mutable_follow();
     follow->mutable_look_at_m()->set_x(look_at_->x());
     follow->mutable_look_at_m()->set_y(look_at_->y());
@@ -289,14 +289,14 @@ void SafetyService::cycle() {
   publish(command);
   share_fragment();
 
-  const ResolverCounters& c = resolver_->counters();
+  const safety::ResolverCounters& c = resolver_->counters();
   conflicts_->increment(static_cast<double>(c.conflicts_detected - reported_.conflicts_detected));
   yields_->increment(static_cast<double>(c.yields - reported_.yields));
   detours_->increment(static_cast<double>(c.detours - reported_.detours));
   deadlock_breaks_->increment(static_cast<double>(c.deadlock_breaks - reported_.deadlock_breaks));
   reported_ = c;
   yielding_->set(decision.yielding_to.empty() ? 0.0 : 1.0);
-  std::string detail = decision.kind == DecisionKind::kFollow ? "following" : "stopped";
+  std::string detail = decision.kind == safety::DecisionKind::kFollow ? "following" : "stopped";
   if (!decision.reason.empty()) detail += ": " + decision.reason;
   context_->set_state(v1::SERVICE_STATE_RUNNING, detail);
 }
@@ -308,7 +308,7 @@ void SafetyService::publish(const v1::MotionCommand& command) {
 void SafetyService::share_fragment() {
   if (!position_) return;
   // Outside an active mission the robot stands still whatever the resolver last decided.
-  Fragment f = resolver_->fragment(*position_);
+  safety::Fragment f = resolver_->fragment(*position_);
   if (!mission_.active()) {
     f.stationary = true;
     f.speed_mps = 0.0;
@@ -318,12 +318,12 @@ void SafetyService::share_fragment() {
   // On the radio only when teammates' prediction of the last one no longer holds.
   const double now = now_s();
   if (!sharing_.due(now, f)) return;
-  context_->publisher().publish(topics::kTeamPath, to_proto(f), sim_time_ns_);
+  context_->publisher().publish(topics::kTeamPath, safety::to_proto(f), sim_time_ns_);
   sharing_.sent(now, f);
 }
 
 void SafetyService::fill_status(v1::ServiceStatus& status) {
-  const ResolverCounters& c = resolver_ ? resolver_->counters() : ResolverCounters{};
+  const safety::ResolverCounters& c = resolver_ ? resolver_->counters() : safety::ResolverCounters{};
   const service::StatusValues add(status);
   add("conflicts", static_cast<double>(c.conflicts_detected));
   add("yields", static_cast<double>(c.yields));
@@ -331,4 +331,4 @@ void SafetyService::fill_status(v1::ServiceStatus& status) {
   add("emergency_stops", emergency_stops_ ? emergency_stops_->value() : 0.0);
 }
 
-}  // namespace hexplore::safety
+}  // namespace hexplore::safety_service

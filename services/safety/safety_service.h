@@ -26,7 +26,7 @@
 #include "hexplore/v1/pose.pb.h"
 #include "hexplore/v1/safety.pb.h"
 
-namespace hexplore::safety {
+namespace hexplore::safety_service {
 
 class SafetyService : public service::Service {
  public:
@@ -42,7 +42,7 @@ class SafetyService : public service::Service {
 
  private:
   struct Peer {
-    std::optional<Fragment> fragment;
+    std::optional<safety::Fragment> fragment;
     int64_t fragment_ns = 0;          // receive time, loop clock
     int64_t fragment_sim_ns = 0;      // sim time stamped by the sender (0 = none)
     std::optional<v1::RobotPose> pose;
@@ -58,7 +58,7 @@ class SafetyService : public service::Service {
   void halt(const std::string& reason);
   // Every teammate heard of: its fresh fragment (moved to where a newer pose puts it), else a
   // fragment from its pose (a silent teammate stays, as a stopped box at its last pose).
-  std::vector<Fragment> peers() const;
+  std::vector<safety::Fragment> peers() const;
   // Whether the teammate's latest pose was sent after its latest fragment.
   bool pose_is_newer(const Peer& peer) const;
   // Whether a message received at (wall, sim) is too old to act on.
@@ -73,22 +73,22 @@ class SafetyService : public service::Service {
 
   service::ServiceContext* context_ = nullptr;
   std::string robot_id_;
-  std::unique_ptr<ConflictResolver> resolver_;
+  std::unique_ptr<safety::ConflictResolver> resolver_;
   double default_speed_mps_ = 0.5;
   // How old a teammate's fragment or pose may be to move it (params.liveness.obstacle_s).
   core::Liveness obstacles_{core::LivenessParams{}.obstacle_s};
-  FragmentSchedule sharing_;
+  safety::FragmentSchedule sharing_;
   std::optional<Eigen::Vector3d> position_;
   int64_t sim_time_ns_ = 0;
   bool sim_clock_ = true;              // --decision-clock sim
   int64_t last_decision_sim_ns_ = -1;
-  Path desired_;
+  safety::Path desired_;
   double path_speed_mps_ = 0.0;
   std::optional<Eigen::Vector3d> look_at_;
   std::map<std::string, Peer> peers_;
   service::MissionState mission_;  // active, stopped or halted, by the station's commands
-  Decision last_;
-  ResolverCounters reported_;   // counters already added to the metrics
+  safety::Decision last_;
+  safety::ResolverCounters reported_;   // counters already added to the metrics
 
   metrics::Counter* conflicts_ = nullptr;
   metrics::Counter* yields_ = nullptr;
@@ -98,4 +98,4 @@ class SafetyService : public service::Service {
   metrics::Gauge* yielding_ = nullptr;
 };
 
-}  // namespace hexplore::safety
+}  // namespace hexplore::safety_service

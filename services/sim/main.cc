@@ -7,5 +7,5 @@
 
 int main(int argc, char** argv) {
   return hexplore::service::run_service_main(argc, argv,
-                                             [] { return std::make_unique<hexplore::sim::SimService>(); });
+                                             [] { return std::make_unique<hexplore::sim_service::SimService>(); });
 }

@@ -19,7 +19,7 @@
 #include "common/sim/sim_proto.h"
 #include "common/transport/topics.h"
 
-namespace hexplore::sim {
+namespace hexplore::sim_service {
 namespace {
 
 namespace topics = transport::topics;
@@ -40,13 +40,13 @@ SimOptions SimOptions::from_arguments(const std::map<std::string, std::string>& 
 
 void SimService::load_world(service::ServiceContext& context, const std::string& scene_dir) {
   const auto& team = context.team();
-  scene_ = load_team_scene(team);
+  scene_ = sim::load_team_scene(team);
   const std::string& scene = scene_.name;  // the resolved name or path
-  caster_ = std::make_unique<RayCaster>(scene_.mesh);
-  if (!scene_dir.empty() && is_builtin_scene(scene)) {
+  caster_ = std::make_unique<sim::RayCaster>(scene_.mesh);
+  if (!scene_dir.empty() && sim::is_builtin_scene(scene)) {
     std::filesystem::create_directories(scene_dir);
     const auto path = std::filesystem::path(scene_dir) / (scene + "_seed" + std::to_string(team.params.seed) + ".ply");
-    write_mesh(scene_.mesh, path.string());
+    sim::write_mesh(scene_.mesh, path.string());
   }
 }
 
@@ -60,16 +60,16 @@ void SimService::setup(service::ServiceContext& context) {
   const SimOptions options = SimOptions::from_arguments(context.arguments());
   bodies_ = core::Liveness(context.team().params.liveness.sim_body_s);
   const double rtf = options.real_time_factor;
-  clock_ = SimClock(rtf);
+  clock_ = sim::SimClock(rtf);
   step_ns_ = static_cast<int64_t>(1e9 / options.step_hz);
   scan_period_ns_ = static_cast<int64_t>(1e9 / options.scan_hz);
 
   try {
     load_world(context, options.scene_dir);
     const uint32_t index = static_cast<uint32_t>(*context.team().robot_index(robot_id_));
-    motion_ = std::make_unique<RobotMotion>(*caster_, *species, robot->start_position_m,
+    motion_ = std::make_unique<sim::RobotMotion>(*caster_, *species, robot->start_position_m,
                                             robot->start_yaw_deg * M_PI / 180.0, index + 1);
-  } catch (const SceneError& e) {
+  } catch (const sim::SceneError& e) {
     throw core::ConfigError(context.team().source_file, "scene", e.what());
   }
 
@@ -78,10 +78,10 @@ void SimService::setup(service::ServiceContext& context) {
   auto* scan_family = m.histogram_family("hexplore_sim_scan_seconds", "Time to cast one LiDAR frame",
                                          metrics::latency_buckets_s());
   auto* rays_family = m.gauge_family("hexplore_sim_rays_per_second", "Rays cast per second in the last LiDAR frame");
-  const uint64_t robot_seed = mix_seed(context.team().params.seed, *context.team().robot_index(robot_id_) + 1);
+  const uint64_t robot_seed = sim::mix_seed(context.team().params.seed, *context.team().robot_index(robot_id_) + 1);
   for (size_t i = 0; i < species->lidars.size(); ++i) {
     Sensor s;
-    s.model = std::make_unique<LidarModel>(species->lidars[i], mix_seed(robot_seed, i + 1));
+    s.model = std::make_unique<sim::LidarModel>(species->lidars[i], sim::mix_seed(robot_seed, i + 1));
     const metrics::Labels sensor_labels = {{"robot", robot_id_}, {"sensor", species->lidars[i].name}};
     s.scan_seconds = scan_family->add(sensor_labels);
     s.rays_per_second = rays_family->add(sensor_labels);
@@ -97,9 +97,9 @@ void SimService::setup(service::ServiceContext& context) {
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) position_m_[a] = position->add({{"robot", robot_id_}, {"axis", axes[a]}});
   auto* state = m.gauge_family("hexplore_sim_motion_state", "1 for the robot's current motion state, 0 for the others");
-  for (MotionState s : {MotionState::kIdle, MotionState::kMoving, MotionState::kStopped, MotionState::kBlocked,
-                        MotionState::kEmergencyStop})
-    motion_state_[s] = state->add({{"robot", robot_id_}, {"state", to_string(s)}});
+  for (sim::MotionState s : {sim::MotionState::kIdle, sim::MotionState::kMoving, sim::MotionState::kStopped, sim::MotionState::kBlocked,
+                        sim::MotionState::kEmergencyStop})
+    motion_state_[s] = state->add({{"robot", robot_id_}, {"state", sim::to_string(s)}});
 
   if (transport::RadioMedium* radio = context.radio()) radio_slot_ = radio->roster().slot(robot_id_);
 
@@ -128,7 +128,7 @@ void SimService::setup(service::ServiceContext& context) {
   core::LogLine(core::LogLevel::kInfo, "sim") << robot_id_ << ": " << scene_.name << " (" << scene_.mesh.triangle_count()
                                               << " triangles), " << species->name << " at " << where
                                               << (context.lockstep() ? std::string(", lockstep") : ", rtf " + std::to_string(rtf));
-  context.set_state(v1::SERVICE_STATE_RUNNING, to_string(motion_->state()));
+  context.set_state(v1::SERVICE_STATE_RUNNING, sim::to_string(motion_->state()));
   update_gauges();
   publish_pose();
 }
@@ -154,7 +154,7 @@ void SimService::on_mission(const v1::MissionCommand& command) {
   if (!state) return;
   switch (*state) {
     case service::MissionState::State::kEmergency:
-      if (motion_->state() != MotionState::kEmergencyStop) emergency_stops_->increment();
+      if (motion_->state() != sim::MotionState::kEmergencyStop) emergency_stops_->increment();
       motion_->emergency_stop();
       publish_pose();  // report the halt at once, not at the next step
       break;
@@ -188,8 +188,8 @@ void SimService::on_body(const std::string& sender, const v1::RobotPose& pose) {
   t.received_ns = context_->now_ns();
 }
 
-std::vector<ProxyBox> SimService::live_teammates() const {
-  std::vector<ProxyBox> out;
+std::vector<sim::ProxyBox> SimService::live_teammates() const {
+  std::vector<sim::ProxyBox> out;
   const int64_t now = context_->now_ns();
   for (const auto& [id, t] : teammates_)
     if (bodies_.fresh(core::ns_to_s(now - t.received_ns))) out.push_back(t.box);
@@ -197,15 +197,15 @@ std::vector<ProxyBox> SimService::live_teammates() const {
 }
 
 void SimService::tick() {
-  const std::vector<ProxyBox> mates = live_teammates();
+  const std::vector<sim::ProxyBox> mates = live_teammates();
   clock_.step(step_ns_);
   motion_->step(core::ns_to_s(step_ns_), mates);
-  if (motion_->state() == MotionState::kBlocked && last_state_ != MotionState::kBlocked) {
+  if (motion_->state() == sim::MotionState::kBlocked && last_state_ != sim::MotionState::kBlocked) {
     blocked_->increment();
     const Eigen::Vector3d at = motion_->ground_position();
     char where[96];
     std::snprintf(where, sizeof(where), "(%.2f, %.2f, %.2f)", at.x(), at.y(), at.z());
-    core::LogLine(core::LogLevel::kInfo, "sim") << robot_id_ << ": blocked (" << to_string(motion_->block_reason())
+    core::LogLine(core::LogLevel::kInfo, "sim") << robot_id_ << ": blocked (" << sim::to_string(motion_->block_reason())
                                                << ") at " << where;
   }
   last_state_ = motion_->state();
@@ -215,7 +215,7 @@ void SimService::tick() {
     // Rare and always worth a line: where, and how close the nearest teammate's centre was.
     const Eigen::Vector3d at = motion_->ground_position();
     double nearest = std::numeric_limits<double>::infinity();
-    for (const ProxyBox& m : mates) nearest = std::min(nearest, (m.center - motion_->body_pose().translation()).head<2>().norm());
+    for (const sim::ProxyBox& m : mates) nearest = std::min(nearest, (m.center - motion_->body_pose().translation()).head<2>().norm());
     char where[128];
     std::snprintf(where, sizeof(where), "(%.2f, %.2f, %.2f), nearest teammate centre %.2f m", at.x(), at.y(), at.z(), nearest);
     core::LogLine(core::LogLevel::kWarn, "sim") << robot_id_ << ": contact with a teammate at " << where;
@@ -226,7 +226,7 @@ void SimService::tick() {
     next_scan_ns_ = clock_.now_ns() + scan_period_ns_;
     scan_all();
   }
-  context_->set_state(v1::SERVICE_STATE_RUNNING, to_string(motion_->state()));
+  context_->set_state(v1::SERVICE_STATE_RUNNING, sim::to_string(motion_->state()));
 }
 
 void SimService::update_gauges() {
@@ -238,25 +238,25 @@ void SimService::update_gauges() {
 }
 
 void SimService::scan_all() {
-  const std::vector<ProxyBox> mates = live_teammates();
+  const std::vector<sim::ProxyBox> mates = live_teammates();
   const Eigen::Isometry3d body = motion_->body_pose();
   for (auto& s : sensors_) {
     if (look_at_) s.model->aim_at(*look_at_, body);
     const int64_t start = core::monotonic_ns();
-    const LidarScan scan = s.model->scan(*caster_, body, mates);
+    const sim::LidarScan scan = s.model->scan(*caster_, body, mates);
     const double seconds = std::max(1e-9, core::ns_to_s(core::monotonic_ns() - start));
     s.scan_seconds->observe(seconds);
     s.rays_per_second->set(static_cast<double>(scan.rays) / seconds);
-    context_->publisher().publish(topics::scan(robot_id_), to_scan_frame(scan, body, s.model->config().max_range_m),
+    context_->publisher().publish(topics::scan(robot_id_), sim::to_scan_frame(scan, body, s.model->config().max_range_m),
                                   clock_.now_ns());
   }
 }
 
 void SimService::publish_pose() {
   v1::RobotPose pose;
-  set_pose(pose.mutable_pose(), motion_->body_pose());
+  sim::set_pose(pose.mutable_pose(), motion_->body_pose());
   radio::set(pose.mutable_velocity_mps(), motion_->velocity());
-  pose.set_state(to_proto(motion_->state()));
+  pose.set_state(sim::to_proto(motion_->state()));
   radio::set(pose.mutable_body_half_extents_m(), motion_->species().body_half_extents_m);
   pose.set_odometry_m(motion_->odometry_m());
   pose.set_collisions(motion_->collisions());
@@ -281,7 +281,7 @@ void SimService::fill_status(v1::ServiceStatus& status) {
   add("sim_time_s", core::ns_to_s(clock_.now_ns()));
   add("odometry_m", motion_->odometry_m());
   add("collisions", motion_->collisions());
-  add("blocked", motion_->state() == MotionState::kBlocked ? 1.0 : 0.0);
+  add("blocked", motion_->state() == sim::MotionState::kBlocked ? 1.0 : 0.0);
 }
 
-}  // namespace hexplore::sim
+}  // namespace hexplore::sim_service

@@ -31,7 +31,7 @@
 #include "hexplore/v1/pose.pb.h"
 #include "hexplore/v1/scan.pb.h"
 
-namespace hexplore::sim {
+namespace hexplore::sim_service {
 
 struct SimOptions {
   double scan_hz = 2.0;           // --scan-hz: LiDAR frames per sim second, every sensor
@@ -52,11 +52,11 @@ class SimService : public service::Service {
 
  private:
   struct Teammate {
-    ProxyBox box;
+    sim::ProxyBox box;
     int64_t received_ns = 0;  // on the loop's clock
   };
   struct Sensor {
-    std::unique_ptr<LidarModel> model;
+    std::unique_ptr<sim::LidarModel> model;
     metrics::Histogram* scan_seconds = nullptr;
     metrics::Gauge* rays_per_second = nullptr;
   };
@@ -69,23 +69,23 @@ class SimService : public service::Service {
   void scan_all();
   void publish_pose();
   void update_gauges();
-  std::vector<ProxyBox> live_teammates() const;
+  std::vector<sim::ProxyBox> live_teammates() const;
 
   service::ServiceContext* context_ = nullptr;
   std::string robot_id_;
-  SceneInfo scene_;
-  std::unique_ptr<RayCaster> caster_;
-  std::unique_ptr<RobotMotion> motion_;
+  sim::SceneInfo scene_;
+  std::unique_ptr<sim::RayCaster> caster_;
+  std::unique_ptr<sim::RobotMotion> motion_;
   service::MissionState mission_;  // what the station's commands asked of this robot
   std::vector<Sensor> sensors_;
   std::map<std::string, Teammate> teammates_;
   core::Liveness bodies_{core::LivenessParams{}.sim_body_s};  // a proxy whose sim went silent goes
   std::optional<Eigen::Vector3d> look_at_;
-  SimClock clock_;
+  sim::SimClock clock_;
   int64_t step_ns_ = 50'000'000;
   int64_t scan_period_ns_ = 500'000'000;
   int64_t next_scan_ns_ = 0;
-  MotionState last_state_ = MotionState::kIdle;
+  sim::MotionState last_state_ = sim::MotionState::kIdle;
   uint32_t reported_collisions_ = 0;
   radio::PoseSchedule team_pose_schedule_;
   std::optional<uint32_t> radio_slot_;  // this robot's slot when a radio model wants positions
@@ -96,7 +96,7 @@ class SimService : public service::Service {
   metrics::Gauge* odometry_m_ = nullptr;
   metrics::Gauge* sim_time_s_ = nullptr;
   metrics::Gauge* position_m_[3] = {nullptr, nullptr, nullptr};  // x, y, z
-  std::map<MotionState, metrics::Gauge*> motion_state_;         // 1 for the current state
+  std::map<sim::MotionState, metrics::Gauge*> motion_state_;         // 1 for the current state
 };
 
-}  // namespace hexplore::sim
+}  // namespace hexplore::sim_service

@@ -71,5 +71,5 @@ int main(int argc, char** argv) {
     args.push_back(station_id.data());
   }
   return hexplore::service::run_service_main(static_cast<int>(args.size()), args.data(),
-                                             [] { return std::make_unique<hexplore::station::StationService>(); });
+                                             [] { return std::make_unique<hexplore::station_service::StationService>(); });
 }

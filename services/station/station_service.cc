@@ -18,7 +18,7 @@
 #include "hexplore/v1/safety.pb.h"
 #include "hexplore/v1/voxels.pb.h"
 
-namespace hexplore::station {
+namespace hexplore::station_service {
 namespace {
 
 using namespace std::chrono_literals;
@@ -61,7 +61,7 @@ StationGauges::StationGauges(metrics::Registry& registry, const core::TeamConfig
                                            "1 once the station started the mission")->add({{"robot", station}});
 }
 
-void StationGauges::on_completeness(const CompletenessSample& sample) {
+void StationGauges::on_completeness(const station::CompletenessSample& sample) {
   team_->set(sample.team);
   observable_->set(sample.team_observable);
   for (const auto& [robot, value] : sample.per_robot)
@@ -92,20 +92,20 @@ void StationService::setup(service::ServiceContext& context) {
   context_ = &context;
   options_ = StationOptions::from_arguments(context.arguments());
   start_wall_ns_ = core::monotonic_ns();
-  EvaluatorOptions eval;
+  station::EvaluatorOptions eval;
   eval.observable = options_.observable;
-  evaluator_ = std::make_unique<CompletenessEvaluator>(context.team(), eval);
-  recorder_ = std::make_unique<TeamRecorder>(context.team());
+  evaluator_ = std::make_unique<station::CompletenessEvaluator>(context.team(), eval);
+  recorder_ = std::make_unique<station::TeamRecorder>(context.team());
   // In the composed team process (fast mode) every socket is inproc.
   recorder_->record().mode = context.lockstep()                             ? "lockstep"
                              : context.team().transport.scheme == "inproc" ? "composed"
                                                                            : "processes";
-  MissionMonitorOptions monitor;
+  station::MissionMonitorOptions monitor;
   monitor.time_limit_s = context.team().time_limit_s;
   monitor.settle_s = options_.settle_s;
   // Never shorter than two route time-outs: a robot may stay silent on planning that long.
   monitor.silent_after_s = std::max(context.team().params.liveness.station_s, 2.0 * context.team().params.eta_t_s);
-  monitor_ = std::make_unique<MissionMonitor>(monitor);
+  monitor_ = std::make_unique<station::MissionMonitor>(monitor);
   gauges_ = std::make_unique<StationGauges>(context.metrics(), context.team());
 
   subscribe_team(context);
@@ -211,7 +211,7 @@ void StationService::request_snapshots() {
                                           {reply->message.keys_xyz().data(),
                                            static_cast<size_t>(reply->message.keys_xyz_size())});
               if (snapshots_pending_ > 0) return;
-              CompletenessSample sample = evaluator_->evaluate(recorder_->mission_time_s());
+              station::CompletenessSample sample = evaluator_->evaluate(recorder_->mission_time_s());
               gauges_->on_completeness(sample);
               recorder_->on_completeness(std::move(sample));
             },
@@ -230,9 +230,9 @@ void StationService::request_open_targets() {
             [this, id = robot.id](const transport::Received<v1::OpenTargetsReport>* reply) {
               --reports_pending_;
               if (reply == nullptr) return;  // a robot that is gone has no report
-              std::vector<OpenTargetRow> rows;
+              std::vector<station::OpenTargetRow> rows;
               for (const v1::OpenTarget& t : reply->message.targets()) {
-                OpenTargetRow row;
+                station::OpenTargetRow row;
                 row.key = t.key();
                 row.center = {t.center_m().x(), t.center_m().y(), t.center_m().z()};
                 row.facade = t.facade();
@@ -283,7 +283,7 @@ void StationService::finish(const std::string& reason) {
     record.final_map_points_m = evaluator_->union_points();
     record_complete_ = true;
     try {
-      const auto files = write_results(record, options_.results_dir);
+      const auto files = station::write_results(record, options_.results_dir);
       std::printf("[station] mission over (%s) after %.1f s sim time; completeness %.1f%%; results in %s (%zu files)\n",
                   end_reason_.c_str(), record.exploration_time_s, 100.0 * record.final_team_completeness(),
                   options_.results_dir.c_str(), files.size());
@@ -308,4 +308,4 @@ void StationService::fill_status(v1::ServiceStatus& status) {
   add("completeness", samples.empty() ? 0.0 : samples.back().team);
 }
 
-}  // namespace hexplore::station
+}  // namespace hexplore::station_service

@@ -13,16 +13,16 @@ namespace hexplore::team {
 
 std::vector<service::ServiceFactory> robot_services() {
   return {
-      [] { return std::make_unique<sim::SimService>(); },
-      [] { return std::make_unique<mapping::MappingService>(); },
-      [] { return std::make_unique<hlmap::HlmapService>(); },
+      [] { return std::make_unique<sim_service::SimService>(); },
+      [] { return std::make_unique<mapping_service::MappingService>(); },
+      [] { return std::make_unique<hlmap_service::HlmapService>(); },
       [] { return std::make_unique<planning_service::PlanningService>(); },
-      [] { return std::make_unique<safety::SafetyService>(); },
+      [] { return std::make_unique<safety_service::SafetyService>(); },
   };
 }
 
 service::ServiceFactory station_service() {
-  return [] { return std::make_unique<station::StationService>(); };
+  return [] { return std::make_unique<station_service::StationService>(); };
 }
 
 }  // namespace hexplore::team

@@ -84,7 +84,7 @@ class MappingServiceTest : public ::testing::Test {
         voxels_[{v.ix(), v.iy(), v.iz()}] = v;
       }
     });
-    host_->add(std::make_unique<MappingService>(), "r1");
+    host_->add(std::make_unique<mapping_service::MappingService>(), "r1");
     host_->start();
     watch_->connect(core::connect_endpoint(team, "r1", ServiceKind::kMapping, SocketRole::kPublish));
   }

@@ -75,7 +75,7 @@ class SafetyServiceTest : public ::testing::Test {
     watch_->on<v1::PathFragment>(std::string(topics::kTeamPath), [this](const transport::Received<v1::PathFragment>& r) {
       last_fragment_ = r.message;
     });
-    host_->add(std::make_unique<SafetyService>(), "r1");
+    host_->add(std::make_unique<safety_service::SafetyService>(), "r1");
     host_->start();
     watch_->connect(core::connect_endpoint(team, "r1", ServiceKind::kSafety, SocketRole::kPublish));
   }

@@ -67,7 +67,7 @@ class SimServiceTest : public ::testing::Test {
       scan_ = r.message;
       ++scans_;
     });
-    host_->add(std::make_unique<SimService>(), "r1");
+    host_->add(std::make_unique<sim_service::SimService>(), "r1");
     host_->start();
     watch_->connect(core::connect_endpoint(team, "r1", ServiceKind::kSim, SocketRole::kPublish));
   }

@@ -57,8 +57,8 @@ Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const 
     for (const auto& r : team.robots) robots.push_back(r.id);
   for (const auto& robot : robots)
     for (const auto& factory : team::robot_services()) host.add(factory(), robot);
-  auto station_owned = std::make_unique<station::StationService>();
-  station::StationService* station = station_owned.get();
+  auto station_owned = std::make_unique<station_service::StationService>();
+  station_service::StationService* station = station_owned.get();
   host.add(std::move(station_owned), std::string(core::kStationId));
   host.start();  // throws core::ConfigError for a team the services refuse
 
