@@ -27,7 +27,7 @@ case $mode in
   lockstep)
     robot_args=()
     for r in $robots; do robot_args+=(--robot "$r"); done
-    "$build/services/team/hexplore_team" --config "$team" "${robot_args[@]}" --results "$results" \
+    "$build/tools/team/hexplore_team" --config "$team" "${robot_args[@]}" --results "$results" \
       --metrics-port 0 --log-level warn > "$results/launch.log" 2>&1 ;;
   *) echo "usage: $0 [processes|lockstep] [RESULTS_DIR]" >&2; exit 2 ;;
 esac

@@ -30,7 +30,7 @@
 #include "common/service/service.h"
 #include "common/station/results_writer.h"
 #include "services/station/station_service.h"
-#include "services/team/team_services.h"
+#include "tools/team/team_services.h"
 #include "tools/experiment/experiment_args.h"
 
 namespace hexplore::experiment {

@@ -57,7 +57,11 @@ std::vector<std::string> default_bin_dirs(const std::string& launcher_path, cons
   fs::path self = fs::canonical(launcher_path, ec);
   if (ec) self = fs::absolute(launcher_path);
   const fs::path dir = self.parent_path();
-  return {dir.string(), (dir.parent_path().parent_path() / "services" / service).string()};
+  // The build tree mirrors the source tree: services in services/<name>, the one-process team
+  // (a composition, not a service) in tools/team beside the launcher.
+  const fs::path build = dir.parent_path().parent_path();
+  const fs::path home = service == "team" ? build / "tools" / "team" : build / "services" / service;
+  return {dir.string(), home.string()};
 }
 
 LaunchPlan plan_launch(const core::TeamConfig& team, const LaunchRequest& request, const std::string& launcher_path) {

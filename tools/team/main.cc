@@ -4,7 +4,7 @@
 // inproc transport, in lockstep on sim time (common/service/lockstep_driver.h); the process
 // ends when the station ends the mission (or a service fails).
 #include "common/service/service.h"
-#include "services/team/team_services.h"
+#include "tools/team/team_services.h"
 
 int main(int argc, char** argv) {
   return hexplore::service::run_team_main(argc, argv, hexplore::team::robot_services(),

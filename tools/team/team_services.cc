@@ -1,4 +1,4 @@
-#include "services/team/team_services.h"
+#include "tools/team/team_services.h"
 
 #include <memory>
 
