@@ -421,7 +421,7 @@ void PlanningService::fill_status(v1::ServiceStatus& status) {
   status.set_detail("planner " + active_name_);
   const service::StatusValues add(status);
   add("round", double(round_));
-  // The station's mission monitor and recorder read these two (common/station/team_recorder.h).
+  // The station's mission monitor and recorder read these two (common/evaluation/team_recorder.h).
   if (round_ > 0) {
     add("views_remaining", double(last_views_));
     add("planning_time_s", last_planning_time_s_);

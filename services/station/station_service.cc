@@ -10,7 +10,7 @@
 #include "common/core/log.h"
 #include "common/service/options.h"
 #include "common/service/status_values.h"
-#include "common/station/results_writer.h"
+#include "common/evaluation/results_writer.h"
 #include "common/transport/topics.h"
 #include "hexplore/v1/hlmap.pb.h"
 #include "hexplore/v1/plan.pb.h"
@@ -61,7 +61,7 @@ StationGauges::StationGauges(metrics::Registry& registry, const core::TeamConfig
                                            "1 once the station started the mission")->add({{"robot", station}});
 }
 
-void StationGauges::on_completeness(const station::CompletenessSample& sample) {
+void StationGauges::on_completeness(const evaluation::CompletenessSample& sample) {
   team_->set(sample.team);
   observable_->set(sample.team_observable);
   for (const auto& [robot, value] : sample.per_robot)
@@ -92,20 +92,20 @@ void StationService::setup(service::ServiceContext& context) {
   context_ = &context;
   options_ = StationOptions::from_arguments(context.arguments());
   start_wall_ns_ = core::monotonic_ns();
-  station::EvaluatorOptions eval;
+  evaluation::EvaluatorOptions eval;
   eval.observable = options_.observable;
-  evaluator_ = std::make_unique<station::CompletenessEvaluator>(context.team(), eval);
-  recorder_ = std::make_unique<station::TeamRecorder>(context.team());
+  evaluator_ = std::make_unique<evaluation::CompletenessEvaluator>(context.team(), eval);
+  recorder_ = std::make_unique<evaluation::TeamRecorder>(context.team());
   // In the composed team process (fast mode) every socket is inproc.
   recorder_->record().mode = context.lockstep()                             ? "lockstep"
                              : context.team().transport.scheme == "inproc" ? "composed"
                                                                            : "processes";
-  station::MissionMonitorOptions monitor;
+  evaluation::MissionMonitorOptions monitor;
   monitor.time_limit_s = context.team().time_limit_s;
   monitor.settle_s = options_.settle_s;
   // Never shorter than two route time-outs: a robot may stay silent on planning that long.
   monitor.silent_after_s = std::max(context.team().params.liveness.station_s, 2.0 * context.team().params.eta_t_s);
-  monitor_ = std::make_unique<station::MissionMonitor>(monitor);
+  monitor_ = std::make_unique<evaluation::MissionMonitor>(monitor);
   gauges_ = std::make_unique<StationGauges>(context.metrics(), context.team());
 
   subscribe_team(context);
@@ -211,7 +211,7 @@ void StationService::request_snapshots() {
                                           {reply->message.keys_xyz().data(),
                                            static_cast<size_t>(reply->message.keys_xyz_size())});
               if (snapshots_pending_ > 0) return;
-              station::CompletenessSample sample = evaluator_->evaluate(recorder_->mission_time_s());
+              evaluation::CompletenessSample sample = evaluator_->evaluate(recorder_->mission_time_s());
               gauges_->on_completeness(sample);
               recorder_->on_completeness(std::move(sample));
             },
@@ -230,9 +230,9 @@ void StationService::request_open_targets() {
             [this, id = robot.id](const transport::Received<v1::OpenTargetsReport>* reply) {
               --reports_pending_;
               if (reply == nullptr) return;  // a robot that is gone has no report
-              std::vector<station::OpenTargetRow> rows;
+              std::vector<evaluation::OpenTargetRow> rows;
               for (const v1::OpenTarget& t : reply->message.targets()) {
-                station::OpenTargetRow row;
+                evaluation::OpenTargetRow row;
                 row.key = t.key();
                 row.center = {t.center_m().x(), t.center_m().y(), t.center_m().z()};
                 row.facade = t.facade();
@@ -283,7 +283,7 @@ void StationService::finish(const std::string& reason) {
     record.final_map_points_m = evaluator_->union_points();
     record_complete_ = true;
     try {
-      const auto files = station::write_results(record, options_.results_dir);
+      const auto files = evaluation::write_results(record, options_.results_dir);
       std::printf("[station] mission over (%s) after %.1f s sim time; completeness %.1f%%; results in %s (%zu files)\n",
                   end_reason_.c_str(), record.exploration_time_s, 100.0 * record.final_team_completeness(),
                   options_.results_dir.c_str(), files.size());

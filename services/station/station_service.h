@@ -13,9 +13,9 @@
 
 #include "common/metrics/registry.h"
 #include "common/service/service.h"
-#include "common/station/completeness_evaluator.h"
-#include "common/station/mission_monitor.h"
-#include "common/station/team_recorder.h"
+#include "common/evaluation/completeness_evaluator.h"
+#include "common/evaluation/mission_monitor.h"
+#include "common/evaluation/team_recorder.h"
 #include "hexplore/v1/mission.pb.h"
 
 namespace hexplore::station_service {
@@ -26,7 +26,7 @@ struct StationOptions {
   double start_wait_s = 60.0;       // start even if some robot is silent after this long
   bool autostart = true;            // send StartMission once every robot is heard
   bool observable = true;           // compute the observable-completeness mask
-  double settle_s = 5.0;            // see station::MissionMonitorOptions
+  double settle_s = 5.0;            // see evaluation::MissionMonitorOptions
   double progress_period_s = 5.0;   // progress line on stdout
   // How often each planner is asked why its targets are open (open_targets.csv); 0: only
   // at the end of the mission.
@@ -41,7 +41,7 @@ struct StationOptions {
 class StationGauges {
  public:
   StationGauges(metrics::Registry& registry, const core::TeamConfig& team);
-  void on_completeness(const station::CompletenessSample& sample);
+  void on_completeness(const evaluation::CompletenessSample& sample);
   void on_tick(double mission_time_s, size_t robots_heard, bool started);
 
  private:
@@ -62,7 +62,7 @@ class StationService : public service::Service {
   void fill_status(v1::ServiceStatus& status) override;
   // The finished mission's record (nullptr before the mission is over). Read it only after the
   // station's loop has ended (ServiceHost::wait), e.g. to summarise several runs.
-  const station::ExperimentRecord* result() const { return record_complete_ ? &recorder_->record() : nullptr; }
+  const evaluation::ExperimentRecord* result() const { return record_complete_ ? &recorder_->record() : nullptr; }
 
  private:
   void subscribe_team(service::ServiceContext& context);
@@ -76,9 +76,9 @@ class StationService : public service::Service {
 
   service::ServiceContext* context_ = nullptr;
   StationOptions options_;
-  std::unique_ptr<station::CompletenessEvaluator> evaluator_;
-  std::unique_ptr<station::TeamRecorder> recorder_;
-  std::unique_ptr<station::MissionMonitor> monitor_;
+  std::unique_ptr<evaluation::CompletenessEvaluator> evaluator_;
+  std::unique_ptr<evaluation::TeamRecorder> recorder_;
+  std::unique_ptr<evaluation::MissionMonitor> monitor_;
   std::unique_ptr<StationGauges> gauges_;
   std::set<std::string> heard_;  // robots whose pose arrived
   std::optional<double> first_heard_s_;  // loop clock (sim time in lockstep)

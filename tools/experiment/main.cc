@@ -28,7 +28,7 @@
 #include "common/core/log.h"
 #include "common/planning/planner_registry.h"
 #include "common/service/service.h"
-#include "common/station/results_writer.h"
+#include "common/evaluation/results_writer.h"
 #include "services/station/station_service.h"
 #include "tools/team/team_services.h"
 #include "tools/experiment/experiment_args.h"
@@ -40,7 +40,7 @@ enum class Outcome { kFinished, kFailed, kInterrupted };
 
 // Runs one mission to its end; the station's record lands in `record` when it finished.
 Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const std::string& results_dir,
-                const sigset_t& stop_signals, std::optional<station::ExperimentRecord>& record) {
+                const sigset_t& stop_signals, std::optional<evaluation::ExperimentRecord>& record) {
   service::HostOptions options;
   options.compose = true;
   options.lockstep = true;
@@ -84,7 +84,7 @@ Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const 
 // services refuse).
 int run_seeds(const core::TeamConfig& base, const ExperimentArgs& args, const std::string& results_dir,
               const std::optional<std::string>& planner, const sigset_t& stop_signals) {
-  std::vector<station::ExperimentRecord> records;
+  std::vector<evaluation::ExperimentRecord> records;
   int exit_code = 0;
   for (size_t i = 0; i < args.seeds.size(); ++i) {
     core::TeamConfig team = base;
@@ -94,7 +94,7 @@ int run_seeds(const core::TeamConfig& base, const ExperimentArgs& args, const st
     std::printf("[experiment] run %zu/%zu: seed %llu -> %s\n", i + 1, args.seeds.size(),
                 static_cast<unsigned long long>(team.params.seed), dir.c_str());
     std::fflush(stdout);
-    std::optional<station::ExperimentRecord> record;
+    std::optional<evaluation::ExperimentRecord> record;
     Outcome outcome;
     try {
       outcome = run_one(team, args, dir, stop_signals, record);
@@ -126,7 +126,7 @@ int run_seeds(const core::TeamConfig& base, const ExperimentArgs& args, const st
     std::cerr << "error: no run finished; no summary written\n";
     return 1;
   }
-  const std::string summary = station::multi_run_summary_json(records);
+  const std::string summary = evaluation::multi_run_summary_json(records);
   const auto path = std::filesystem::path(results_dir) / "summary.json";
   std::filesystem::create_directories(results_dir);
   std::ofstream(path) << summary;

@@ -4,10 +4,10 @@
 #include <fstream>
 #include <iterator>
 
-#include "common/station/png_writer.h"
+#include "common/evaluation/png_writer.h"
 #include "tests/support/scratch_dir.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 namespace {
 
 uint32_t be32(const std::vector<uint8_t>& b, size_t at) {
@@ -79,4 +79,4 @@ TEST(PngWriter, UnwritablePathIsNamed) {
 }
 
 }  // namespace
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

@@ -1,9 +1,9 @@
-#include "common/station/experiment_record.h"
+#include "common/evaluation/experiment_record.h"
 
 #include <algorithm>
 #include <map>
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 double RobotTrack::counter(const std::string& key) const {
   auto it = counters.find(key);
@@ -48,4 +48,4 @@ void ExperimentRecord::add_open_targets_report(const std::string& robot, double 
   }
 }
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

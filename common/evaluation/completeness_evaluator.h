@@ -11,14 +11,14 @@
 #include <vector>
 
 #include "common/core/team_config.h"
-#include "common/station/experiment_record.h"
+#include "common/evaluation/experiment_record.h"
 
 namespace hexplore::sim {
 struct SceneInfo;
 struct SurfaceSamples;
 }  // namespace hexplore::sim
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 struct EvaluatorOptions {
   double sample_spacing_m = 0.1;  // issue 3: ~0.1 m ground-truth samples
@@ -53,4 +53,4 @@ class CompletenessEvaluator {
   std::map<std::string, RobotMap> maps_;
 };
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

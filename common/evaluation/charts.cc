@@ -1,11 +1,11 @@
-#include "common/station/charts.h"
+#include "common/evaluation/charts.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 namespace {
 
 constexpr Rgb kWhite{255, 255, 255};
@@ -161,4 +161,4 @@ Raster topdown_map(const ExperimentRecord& record, int width, int height) {
   return r;
 }
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

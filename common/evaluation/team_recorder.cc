@@ -1,8 +1,8 @@
-#include "common/station/team_recorder.h"
+#include "common/evaluation/team_recorder.h"
 
 #include <algorithm>
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 namespace {
 
 // Trajectory points closer than this (in time and space) to the previous one are not stored;
@@ -151,4 +151,4 @@ void TeamRecorder::on_completeness(CompletenessSample sample) {
   record_.completeness.push_back(std::move(sample));
 }
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

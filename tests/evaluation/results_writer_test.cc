@@ -4,10 +4,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "common/station/results_writer.h"
+#include "common/evaluation/results_writer.h"
 #include "tests/support/scratch_dir.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 namespace {
 
 ExperimentRecord sample_record(uint64_t seed, double time_s, double final_completeness) {
@@ -140,4 +140,4 @@ TEST(ResultsWriter, UnwritableFolderIsNamed) {
 }
 
 }  // namespace
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

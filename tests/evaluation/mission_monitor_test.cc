@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
-#include "common/station/mission_monitor.h"
+#include "common/evaluation/mission_monitor.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 namespace {
 
 MissionMonitorOptions options() {
@@ -68,4 +68,4 @@ TEST(MissionMonitor, NoReportsNeverCompletes) {
 }
 
 }  // namespace
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

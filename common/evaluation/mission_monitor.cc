@@ -1,6 +1,6 @@
-#include "common/station/mission_monitor.h"
+#include "common/evaluation/mission_monitor.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 void MissionMonitor::on_planning_status(const std::string& robot, double sim_time_s, int views_remaining) {
   auto& report = reports_[robot];
@@ -33,4 +33,4 @@ std::optional<std::string> MissionMonitor::check(double sim_time_s) {
   return std::nullopt;
 }
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "common/core/team_config.h"
-#include "common/station/experiment_record.h"
+#include "common/evaluation/experiment_record.h"
 #include "hexplore/v1/pose.pb.h"
 #include "hexplore/v1/status.pb.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 // Paper category of a team topic ("pose", "incremental_map", ...); nullopt for other topics.
 std::optional<std::string> communication_category(std::string_view topic);
@@ -69,4 +69,4 @@ class TeamRecorder {
 // RobotTrack::counters). Every service may report the radio drops.
 const std::vector<std::string>& status_counters();
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

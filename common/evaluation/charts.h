@@ -1,10 +1,10 @@
 #pragma once
 // The two result pictures, drawn on a Raster.
 
-#include "common/station/experiment_record.h"
-#include "common/station/png_writer.h"
+#include "common/evaluation/experiment_record.h"
+#include "common/evaluation/png_writer.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 // Colour of the i-th robot (stable palette).
 Rgb robot_colour(size_t index);
@@ -15,4 +15,4 @@ Raster completeness_chart(const ExperimentRecord& record, int width = 900, int h
 // Top-down view of the final map (grey by height) with each robot's trajectory in its colour.
 Raster topdown_map(const ExperimentRecord& record, int width = 900, int height = 900);
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

@@ -10,7 +10,7 @@
 
 #include "common/core/liveness.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 struct MissionMonitorOptions {
   double time_limit_s = 1800.0;
@@ -45,4 +45,4 @@ class MissionMonitor {
   std::optional<double> all_empty_since_s_;
 };
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

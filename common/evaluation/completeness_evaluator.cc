@@ -1,4 +1,4 @@
-#include "common/station/completeness_evaluator.h"
+#include "common/evaluation/completeness_evaluator.h"
 
 #include <algorithm>
 
@@ -8,7 +8,7 @@
 #include "common/sim/ray_caster.h"
 #include "common/sim/scenes.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 CompletenessEvaluator::CompletenessEvaluator(const core::TeamConfig& team, EvaluatorOptions options)
     : scene_(std::make_unique<sim::SceneInfo>(
@@ -70,4 +70,4 @@ size_t CompletenessEvaluator::observable_count() const {
   return static_cast<size_t>(std::count(observable_mask_.begin(), observable_mask_.end(), uint8_t{1}));
 }
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

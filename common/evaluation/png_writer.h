@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 struct Rgb {
   uint8_t r = 0, g = 0, b = 0;
@@ -38,4 +38,4 @@ class Raster {
 // Writes the raster as an 8-bit RGB PNG; throws std::runtime_error naming the path on failure.
 void write_png(const Raster& image, const std::string& path);
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "common/station/experiment_record.h"
+#include "common/evaluation/experiment_record.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 struct StrategyVolume {
   std::string strategy;  // incremental_high_level, full_high_level, full_perception
@@ -34,4 +34,4 @@ std::string communication_csv(const ExperimentRecord& record);
 // map_transmission.csv: strategy,cumulative_kb,average_kb_per_s (per robot, as the paper).
 std::string map_transmission_csv(const ExperimentRecord& record);
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

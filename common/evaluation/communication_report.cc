@@ -1,10 +1,10 @@
-#include "common/station/communication_report.h"
+#include "common/evaluation/communication_report.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 namespace {
 
 std::string number(double v) {
@@ -120,4 +120,4 @@ std::string map_transmission_csv(const ExperimentRecord& r) {
   return m.str();
 }
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

@@ -1,4 +1,4 @@
-#include "common/station/results_writer.h"
+#include "common/evaluation/results_writer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/station/charts.h"
-#include "common/station/communication_report.h"
+#include "common/evaluation/charts.h"
+#include "common/evaluation/communication_report.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 namespace {
 
 std::string quoted(const std::string& s) {
@@ -265,4 +265,4 @@ std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs) {
   return j.str();
 }
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 // Reconstruction completeness at one sim time, as fractions in [0, 1].
 struct CompletenessSample {
@@ -27,7 +27,7 @@ struct RobotTrack {
   double length_m = 0.0;
   uint32_t collisions = 0;
   std::string last_state;
-  // Status counters since the start, "service.value" (station::status_counters()); radio
+  // Status counters since the start, "service.value" (evaluation::status_counters()); radio
   // drops per reporting service ("hlmap.radio_lost", ...).
   std::map<std::string, double> counters;
 
@@ -92,4 +92,4 @@ struct ExperimentRecord {
   double final_team_completeness() const;
 };
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

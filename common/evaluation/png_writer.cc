@@ -1,4 +1,4 @@
-#include "common/station/png_writer.h"
+#include "common/evaluation/png_writer.h"
 
 #include <zlib.h>
 
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 namespace {
 
 // 5x7 glyphs, one byte per row, the low 5 bits are the columns (bit 4 = leftmost).
@@ -152,4 +152,4 @@ void write_png(const Raster& image, const std::string& path) {
   if (!out) throw std::runtime_error(path + ": write failed");
 }
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

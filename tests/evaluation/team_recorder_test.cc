@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
 
 #include "common/core/team_config.h"
-#include "common/station/team_recorder.h"
+#include "common/evaluation/team_recorder.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 namespace {
 
 core::TeamConfig team() {
@@ -139,4 +139,4 @@ TEST(TeamRecorder, PlanningTimeRecordedOncePerRound) {
 }
 
 }  // namespace
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation

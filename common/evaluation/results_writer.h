@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "common/station/experiment_record.h"
+#include "common/evaluation/experiment_record.h"
 
-namespace hexplore::station {
+namespace hexplore::evaluation {
 
 // Creates `dir` if needed and writes summary.json, completeness.csv, trajectories.csv,
 // communication.csv, planning.csv, completeness.png, topdown.png. Returns the files written.
@@ -23,4 +23,4 @@ std::string summary_json(const ExperimentRecord& record);
 // seeds and each run's end reason.
 std::string multi_run_summary_json(const std::vector<ExperimentRecord>& runs);
 
-}  // namespace hexplore::station
+}  // namespace hexplore::evaluation
