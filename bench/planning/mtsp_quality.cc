@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "common/planning/ga_solver.h"
-#include "common/planning/tsplib.h"
+#include "common/planning/mtsp/ga_solver.h"
+#include "common/planning/mtsp/tsplib.h"
 
 using namespace hexplore::planning;
 

@@ -34,7 +34,7 @@
 #include "common/perception/voxel_proto.h"
 #include "common/planning/capabilities.h"
 #include "common/planning/labels.h"
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 #include "common/planning/round_inputs.h"
 #include "common/sim/lidar.h"
 #include "common/sim/observability.h"

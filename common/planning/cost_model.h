@@ -10,7 +10,7 @@
 
 #include "common/planning/capabilities.h"
 #include "common/planning/clustering.h"
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 #include "common/planning/planning_types.h"
 
 namespace hexplore::planning {

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 
 namespace hexplore::planning {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "common/core/clock.h"
-#include "common/planning/local_search.h"
+#include "common/planning/mtsp/local_search.h"
 #include "common/planning/robot_vertex.h"
 
 namespace hexplore::planning {

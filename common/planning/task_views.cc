@@ -5,7 +5,7 @@
 #include <unordered_set>
 
 #include "common/planning/labels.h"
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 
 namespace hexplore::planning {
 

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 
 namespace hexplore::planning {
 

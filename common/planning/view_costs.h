@@ -13,7 +13,7 @@
 
 #include "common/highlevel/topology_graph.h"
 #include "common/planning/capabilities.h"
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 #include "common/planning/planning_types.h"
 
 namespace hexplore::planning {

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "common/planning/local_search.h"
+#include "common/planning/mtsp/local_search.h"
 #include "common/planning/vrp_instance.h"
 
 namespace hexplore::planning {

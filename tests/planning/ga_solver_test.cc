@@ -1,4 +1,4 @@
-#include "common/planning/ga_solver.h"
+#include "common/planning/mtsp/ga_solver.h"
 
 #include <set>
 

@@ -7,7 +7,7 @@
 
 #include "common/core/team_config.h"
 #include "common/highlevel/supervoxel.h"
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 #include "common/planning/route_pruning.h"
 #include "common/planning/visibility.h"
 

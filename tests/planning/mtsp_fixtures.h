@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 #include "common/planning/rng.h"
 
 namespace hexplore::planning::testing {

@@ -4,8 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/planning/ga_solver.h"
-#include "common/planning/tsplib.h"
+#include "common/planning/mtsp/ga_solver.h"
+#include "common/planning/mtsp/tsplib.h"
 #include "tools/mtsp_solver/species_file.h"
 
 namespace hexplore::mtsp {

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 
 namespace hexplore::mtsp {
 

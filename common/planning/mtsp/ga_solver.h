@@ -10,8 +10,8 @@
 #include <functional>
 #include <vector>
 
-#include "common/planning/local_search.h"
-#include "common/planning/mtsp_fitness.h"
+#include "common/planning/mtsp/local_search.h"
+#include "common/planning/mtsp/mtsp_fitness.h"
 
 namespace hexplore::planning {
 

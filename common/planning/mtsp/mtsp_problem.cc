@@ -1,4 +1,4 @@
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "common/planning/local_search.h"
+#include "common/planning/mtsp/local_search.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "common/planning/mtsp_fitness.h"
+#include "common/planning/mtsp/mtsp_fitness.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "common/planning/tsplib.h"
+#include "common/planning/mtsp/tsplib.h"
 
 #include <algorithm>
 #include <cmath>

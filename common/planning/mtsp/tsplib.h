@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "common/planning/mtsp_problem.h"
+#include "common/planning/mtsp/mtsp_problem.h"
 
 namespace hexplore::planning {
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/planning/mtsp_fitness.h"
+#include "common/planning/mtsp/mtsp_fitness.h"
 
 namespace hexplore::planning {
 
