@@ -1,6 +1,8 @@
 #include "common/evaluation/completeness_evaluator.h"
 
 #include <algorithm>
+#include <set>
+#include <tuple>
 
 #include "common/core/log.h"
 #include "common/sim/ground_truth.h"
@@ -54,12 +56,16 @@ CompletenessSample CompletenessEvaluator::evaluate(double mission_time_s) const 
 }
 
 std::vector<Eigen::Vector3f> CompletenessEvaluator::union_points() const {
+  // Teammates map the same cells: each cell once (robots share the map resolution).
+  std::set<std::tuple<int32_t, int32_t, int32_t>> seen;
   std::vector<Eigen::Vector3f> points;
   for (const auto& [robot, map] : maps_)
-    for (size_t i = 0; i + 2 < map.keys_xyz.size(); i += 3)
+    for (size_t i = 0; i + 2 < map.keys_xyz.size(); i += 3) {
+      if (!seen.emplace(map.keys_xyz[i], map.keys_xyz[i + 1], map.keys_xyz[i + 2]).second) continue;
       points.emplace_back(static_cast<float>((map.keys_xyz[i] + 0.5) * map.resolution_m),
                           static_cast<float>((map.keys_xyz[i + 1] + 0.5) * map.resolution_m),
                           static_cast<float>((map.keys_xyz[i + 2] + 0.5) * map.resolution_m));
+    }
   return points;
 }
 

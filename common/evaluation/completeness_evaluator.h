@@ -36,7 +36,8 @@ class CompletenessEvaluator {
   void set_robot_map(const std::string& robot, double resolution_m, std::span<const int32_t> keys_xyz);
   // Completeness now, team (union), observable and per robot.
   CompletenessSample evaluate(double mission_time_s) const;
-  // Occupied voxel centres of the union of all robot maps (for the top-down picture).
+  // Occupied voxel centres of the union of all robot maps, each cell once (the reconstruction
+  // the results export).
   std::vector<Eigen::Vector3f> union_points() const;
 
   size_t sample_count() const;

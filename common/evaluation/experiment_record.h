@@ -76,8 +76,10 @@ struct ExperimentRecord {
   double exploration_time_s = 0.0;
   std::string end_reason;  // "no task views remain", "time limit", "stopped", ...
   double wall_time_s = 0.0;
-  // Top-down picture input: occupied voxel centres of the union map at the end.
+  // The team's reconstruction: occupied voxel centres of the union map at the end, on a grid
+  // of map_resolution_m (exported as map.ply, map.pcd, map.bt).
   std::vector<Eigen::Vector3f> final_map_points_m;
+  double map_resolution_m = 0.15;
   // Why exploration was not finished: each live planner's open targets at the end.
   // Every open-target report of the mission (periodic ones and the final one), in order.
   std::vector<OpenTargetRow> open_targets;

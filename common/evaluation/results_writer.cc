@@ -9,8 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/evaluation/charts.h"
 #include "common/evaluation/communication_report.h"
+#include "common/evaluation/map_export.h"
 
 namespace hexplore::evaluation {
 namespace {
@@ -184,10 +184,7 @@ std::vector<std::string> write_results(const ExperimentRecord& r, const std::str
       << t.gap << "," << t.state << "," << t.attempts << "\n";
   write_text(root / "open_targets.csv", o.str(), written);
 
-  write_png(completeness_chart(r), (root / "completeness.png").string());
-  written.push_back((root / "completeness.png").string());
-  write_png(topdown_map(r), (root / "topdown.png").string());
-  written.push_back((root / "topdown.png").string());
+  for (auto& file : export_map(r.final_map_points_m, r.map_resolution_m, root.string())) written.push_back(std::move(file));
   return written;
 }
 

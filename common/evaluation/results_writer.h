@@ -1,6 +1,6 @@
 #pragma once
-// Writes one mission's results folder: machine-readable JSON/CSV and two pictures
-// (completeness vs time, top-down map with each robot's trajectory in its own colour).
+// Writes one mission's results folder: machine-readable JSON/CSV and the team's reconstruction
+// (map.ply, map.pcd, map.bt). Its figures are drawn from these files by tools/report/run_report.py.
 
 #include <string>
 #include <vector>
@@ -10,7 +10,8 @@
 namespace hexplore::evaluation {
 
 // Creates `dir` if needed and writes summary.json, completeness.csv, trajectories.csv,
-// communication.csv, planning.csv, completeness.png, topdown.png. Returns the files written.
+// communication.csv, map_transmission.csv, planning.csv, open_targets.csv and the map files
+// (evaluation/map_export.h). Returns the files written.
 // Throws std::runtime_error naming the file that could not be written.
 std::vector<std::string> write_results(const ExperimentRecord& record, const std::string& dir);
 

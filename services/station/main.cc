@@ -1,5 +1,6 @@
 // hexplore_station: the ground station process.
 //   hexplore_station --config TEAM.yaml [--results DIR] [--snapshot-period-s S] [--autostart true|false]
+//                    [--report true|false] [--report-script PATH]   (figures: tools/report/run_report.py)
 //   hexplore_station --config TEAM.yaml --send start|stop|estop|planner=<name>   (relay one command to a running station)
 #include <cstdio>
 #include <cstring>

@@ -10,6 +10,7 @@
 #include "common/core/log.h"
 #include "common/service/options.h"
 #include "common/service/status_values.h"
+#include "common/evaluation/report_script.h"
 #include "common/evaluation/results_writer.h"
 #include "common/transport/topics.h"
 #include "hexplore/v1/hlmap.pb.h"
@@ -84,6 +85,8 @@ StationOptions StationOptions::from_arguments(const std::map<std::string, std::s
   o.progress_period_s = opts.number("progress-period-s", o.progress_period_s, 0.0);
   o.open_targets_period_s = opts.number("open-targets-period-s", o.open_targets_period_s, 0.0);
   o.autostart = opts.flag("autostart", o.autostart);
+  o.report = opts.flag("report", o.report);
+  o.report_script = opts.text("report-script", o.report_script);
   o.observable = opts.flag("observable", o.observable);
   return o;
 }
@@ -281,6 +284,7 @@ void StationService::finish(const std::string& reason) {
     record.exploration_time_s = recorder_->mission_time_s();
     record.wall_time_s = core::ns_to_s(core::monotonic_ns() - start_wall_ns_);
     record.final_map_points_m = evaluator_->union_points();
+    record.map_resolution_m = context_->team().params.map_resolution_m;
     record_complete_ = true;
     try {
       const auto files = evaluation::write_results(record, options_.results_dir);
@@ -288,6 +292,13 @@ void StationService::finish(const std::string& reason) {
                   end_reason_.c_str(), record.exploration_time_s, 100.0 * record.final_team_completeness(),
                   options_.results_dir.c_str(), files.size());
       std::fflush(stdout);
+      if (options_.report) {
+        if (const auto why_not = evaluation::run_report_script(options_.report_script, options_.results_dir))
+          std::printf("[station] figures not drawn: %s\n", why_not->c_str());
+        else
+          std::printf("[station] figures and report.md in %s\n", options_.results_dir.c_str());
+        std::fflush(stdout);
+      }
     } catch (const std::exception& e) {
       core::log(core::LogLevel::kError, "station", e.what());
     }

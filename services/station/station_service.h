@@ -15,6 +15,7 @@
 #include "common/service/service.h"
 #include "common/evaluation/completeness_evaluator.h"
 #include "common/evaluation/mission_monitor.h"
+#include "common/evaluation/report_script.h"
 #include "common/evaluation/team_recorder.h"
 #include "hexplore/v1/mission.pb.h"
 
@@ -31,6 +32,10 @@ struct StationOptions {
   // How often each planner is asked why its targets are open (open_targets.csv); 0: only
   // at the end of the mission.
   double open_targets_period_s = 0.0;
+  // --report false: no figures; --report-script PATH: what draws them from the results folder
+  // (a mission's figures never fail it: without Python the station says so and goes on).
+  bool report = true;
+  std::string report_script = evaluation::report_script_path("run_report.py");
 
   // From the service's "--name value" arguments; throws core::ConfigError on a bad value.
   static StationOptions from_arguments(const std::map<std::string, std::string>& arguments);

@@ -67,7 +67,7 @@ TEST(ResultsWriter, WritesEveryFile) {
   const hexplore::testing::ScratchDir scratch("results_writer_test");
   const auto dir = scratch.path() / "results";
   const auto files = write_results(sample_record(1, 100.0, 0.8), dir.string());
-  EXPECT_EQ(files.size(), 9u);
+  EXPECT_EQ(files.size(), 10u);  // seven tables and the map as PLY, PCD and OctoMap
   for (const auto& f : files) EXPECT_GT(std::filesystem::file_size(f), 20u) << f;
   const auto summary = slurp(dir / "summary.json");
   EXPECT_NE(summary.find("\"final_completeness\": 0.8"), std::string::npos) << summary;

@@ -18,7 +18,7 @@ struct ExperimentArgs {
   // report (results_dir/comparison.*); excludes --planner.
   std::vector<std::string> planners;
   int jobs = 1;                        // --jobs N: up to N planners' runs at once, as child processes
-  bool report = true;                  // --report false: no comparison report
+  bool report = true;                  // --report false: no figures, no comparison report
   std::optional<std::string> report_script;  // --report-script PATH (default: the source tree's)
   std::vector<std::string> robots;     // empty: every robot of the team file
   std::string log_level = "warn";

@@ -8,10 +8,10 @@
 // The comparison: --planners a,b,c runs every planner's seeds into DIR/<planner>/ (as above;
 // --jobs N runs up to N planners at once, each as a child process logging to
 // DIR/<planner>/experiment.log), then tools/report/compare_report.py writes DIR/comparison.*
-// and DIR/figures/ (--report false skips it; --report-script PATH names another script).
+// and DIR/figures/ (--report-script PATH names another script). Every seeds folder gets its
+// figures from tools/report/run_report.py; --report false skips both.
 // Exit: 0 all runs finished, 1 a run failed or was interrupted, 2 bad arguments or team file.
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,6 +28,7 @@
 #include "common/core/log.h"
 #include "common/planning/planner_registry.h"
 #include "common/service/service.h"
+#include "common/evaluation/report_script.h"
 #include "common/evaluation/results_writer.h"
 #include "services/station/station_service.h"
 #include "tools/team/team_services.h"
@@ -47,6 +48,7 @@ Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const 
   options.metrics_port = 0;
   options.arguments = args.service_arguments;
   options.arguments["results"] = results_dir;
+  options.arguments["report"] = "false";  // the figures of every seed are drawn together at the end
   // Each mission's planning traces in a folder of their own (DIR/seed-<n>), not on top of
   // the previous seed's.
   if (auto it = options.arguments.find("trace-dir"); it != options.arguments.end())
@@ -82,6 +84,14 @@ Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const 
 // Every seed of one planner (`planner` overrides params.planner when set) into `dir`:
 // dir/seed-<n>/ and dir/summary.json. Returns the exit code (0, 1, or 2 for a team the
 // services refuse).
+// Runs a report script of tools/report on `folder`; says why when it cannot (the runs stand).
+void run_report(const std::string& script, const std::string& folder) {
+  std::printf("[experiment] report: %s %s\n", script.c_str(), folder.c_str());
+  std::fflush(stdout);
+  if (const auto why_not = evaluation::run_report_script(script, folder))
+    std::printf("[experiment] no report for %s: %s; the runs themselves are there\n", folder.c_str(), why_not->c_str());
+}
+
 int run_seeds(const core::TeamConfig& base, const ExperimentArgs& args, const std::string& results_dir,
               const std::optional<std::string>& planner, const sigset_t& stop_signals) {
   std::vector<evaluation::ExperimentRecord> records;
@@ -131,6 +141,8 @@ int run_seeds(const core::TeamConfig& base, const ExperimentArgs& args, const st
   std::filesystem::create_directories(results_dir);
   std::ofstream(path) << summary;
   std::printf("[experiment] %zu runs; summary in %s\n%s", records.size(), path.c_str(), summary.c_str());
+  // Each seed's figures and report.md, and completeness over the seeds (mean and spread).
+  if (args.report) run_report(evaluation::report_script_path("run_report.py"), results_dir);
   return exit_code;
 }
 
@@ -146,7 +158,7 @@ pid_t spawn_planner(const ExperimentArgs& args, const std::string& planner, cons
                                    "--log-level", args.log_level};
   std::string seeds;
   for (uint64_t s : args.seeds) seeds += (seeds.empty() ? "" : ",") + std::to_string(s);
-  argv.insert(argv.end(), {"--seeds", seeds});
+  argv.insert(argv.end(), {"--seeds", seeds, "--report", args.report ? "true" : "false"});
   for (const auto& r : args.robots) argv.insert(argv.end(), {"--robot", r});
   for (const auto& [k, v] : args.service_arguments) argv.insert(argv.end(), {"--" + k, v});
   std::filesystem::create_directories(dir);
@@ -163,40 +175,6 @@ pid_t spawn_planner(const ExperimentArgs& args, const std::string& planner, cons
   _exit(127);
 }
 
-// Runs the report script on the comparison folder; says why when it cannot.
-void run_report(const ExperimentArgs& args) {
-#ifdef HEXPLORE_COMPARE_REPORT
-  std::string script = args.report_script.value_or(HEXPLORE_COMPARE_REPORT);
-#else
-  std::string script = args.report_script.value_or("tools/report/compare_report.py");
-#endif
-  if (!std::filesystem::exists(script)) {
-    std::printf("[experiment] no comparison report: %s not found (--report-script PATH)\n", script.c_str());
-    return;
-  }
-  // Debian's interpreter is the one python3-matplotlib installs into (a python3 earlier on the
-  // PATH, e.g. pyenv's, may lack it); HEXPLORE_PYTHON overrides.
-  std::string python = "python3";
-  if (const char* env = std::getenv("HEXPLORE_PYTHON"); env && *env) python = env;
-  else if (std::filesystem::exists("/usr/bin/python3")) python = "/usr/bin/python3";
-  std::vector<std::string> argv = {python, script, args.results_dir};
-  std::vector<char*> raw;
-  for (auto& a : argv) raw.push_back(a.data());
-  raw.push_back(nullptr);
-  std::printf("[experiment] report: %s %s %s\n", python.c_str(), script.c_str(), args.results_dir.c_str());
-  std::fflush(stdout);
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, raw.data(), environ) != 0) {
-    std::printf("[experiment] no comparison report: python3 is not installed (apt-get install python3 "
-                "python3-matplotlib, then run the line above)\n");
-    return;
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    std::printf("[experiment] the comparison report failed (exit %d); the runs themselves are in %s\n",
-                WIFEXITED(status) ? WEXITSTATUS(status) : -1, args.results_dir.c_str());
-}
 
 // --planners: each planner's seeds into results_dir/<planner>/, then the report.
 int run_comparison(const core::TeamConfig& base, const ExperimentArgs& args, const sigset_t& stop_signals) {
@@ -255,7 +233,8 @@ int run_comparison(const core::TeamConfig& base, const ExperimentArgs& args, con
       return 1;
     }
   }
-  if (args.report) run_report(args);
+  if (args.report)
+    run_report(args.report_script.value_or(evaluation::report_script_path("compare_report.py")), args.results_dir);
   return exit_code;
 }
 
