@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace hexplore::evaluation {
 
@@ -24,6 +25,7 @@ struct RobotTrack {
   std::string species;
   std::vector<double> times_s;
   std::vector<Eigen::Vector3d> positions_m;
+  std::vector<Eigen::Quaterniond> orientations;  // body orientation at each position (world frame)
   double length_m = 0.0;
   uint32_t collisions = 0;
   std::string last_state;

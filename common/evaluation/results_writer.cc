@@ -166,6 +166,19 @@ std::vector<std::string> write_results(const ExperimentRecord& r, const std::str
         << number(track.positions_m[i].x()) << "," << number(track.positions_m[i].y()) << ","
         << number(track.positions_m[i].z()) << "\n";
   write_text(root / "trajectories.csv", t.str(), written);
+  // The same trajectories in TUM format (what evo and most SLAM tools read): one file per
+  // robot, "time x y z qx qy qz qw" per line.
+  for (const auto& [id, track] : r.robots) {
+    std::ostringstream tum;
+    tum.precision(9);
+    for (size_t i = 0; i < track.positions_m.size(); ++i) {
+      const Eigen::Quaterniond q = i < track.orientations.size() ? track.orientations[i] : Eigen::Quaterniond::Identity();
+      const Eigen::Vector3d& p = track.positions_m[i];
+      tum << (i < track.times_s.size() ? track.times_s[i] : 0.0) << " " << p.x() << " " << p.y() << " " << p.z() << " "
+          << q.x() << " " << q.y() << " " << q.z() << " " << q.w() << "\n";
+    }
+    write_text(root / ("trajectory_" + id + ".tum"), tum.str(), written);
+  }
 
   write_text(root / "communication.csv", communication_csv(r), written);
   write_text(root / "map_transmission.csv", map_transmission_csv(r), written);

@@ -47,6 +47,7 @@ void TeamRecorder::start(double sim_time_s) {
   for (auto& [_, track] : record_.robots) {
     track.times_s.clear();
     track.positions_m.clear();
+    track.orientations.clear();
     track.length_m = 0.0;
     track.longest_blocked_s = 0.0;
     track.blocked_since_s = -1.0;
@@ -83,8 +84,12 @@ bool TeamRecorder::on_pose(const std::string& robot, double sim_time_s, const v1
   } else {
     track.blocked_since_s = -1.0;
   }
+  const auto& o = pose.pose().orientation();
+  Eigen::Quaterniond q(o.w(), o.x(), o.y(), o.z());
+  q = q.norm() > 1e-9 && q.coeffs().allFinite() ? q.normalized() : Eigen::Quaterniond::Identity();
   if (track.positions_m.empty()) {
     track.positions_m.push_back(p);
+    track.orientations.push_back(q);
     track.times_s.push_back(t);
     return true;
   }
@@ -92,6 +97,7 @@ bool TeamRecorder::on_pose(const std::string& robot, double sim_time_s, const v1
   if (step >= kMinSampleSpacingM || t - track.times_s.back() >= kMinSamplePeriodS) {
     chord_length_m_[robot] += step;
     track.positions_m.push_back(p);
+    track.orientations.push_back(q);
     track.times_s.push_back(t);
   }
   // The sim integrates odometry every motion step (its status); the chord sum of the poses

@@ -67,7 +67,7 @@ TEST(ResultsWriter, WritesEveryFile) {
   const hexplore::testing::ScratchDir scratch("results_writer_test");
   const auto dir = scratch.path() / "results";
   const auto files = write_results(sample_record(1, 100.0, 0.8), dir.string());
-  EXPECT_EQ(files.size(), 10u);  // seven tables and the map as PLY, PCD and OctoMap
+  EXPECT_EQ(files.size(), 12u);  // seven tables, a TUM trajectory per robot, the map as PLY, PCD, OctoMap
   for (const auto& f : files) EXPECT_GT(std::filesystem::file_size(f), 20u) << f;
   const auto summary = slurp(dir / "summary.json");
   EXPECT_NE(summary.find("\"final_completeness\": 0.8"), std::string::npos) << summary;
@@ -94,6 +94,10 @@ TEST(ResultsWriter, WritesEveryFile) {
   EXPECT_NE(summary.find("\"map_sync\": {\"gaps_detected\": 3, \"gaps_repaired\": 2"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"radio_drops\": {\"expired\": 0, \"lost\": 0, \"out_of_range\": 45}"), std::string::npos)
       << summary;
+  // TUM: "time x y z qx qy qz qw", one line per sample (no orientation recorded: identity).
+  const auto tum = slurp(dir / "trajectory_b.tum");
+  EXPECT_EQ(std::count(tum.begin(), tum.end(), '\n'), 20);
+  EXPECT_NE(tum.find("\n2 0 1 0 0 0 0 1\n"), std::string::npos) << tum;
   const auto completeness = slurp(dir / "completeness.csv");
   EXPECT_EQ(std::count(completeness.begin(), completeness.end(), '\n'), 12);
 }

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "common/core/team_config.h"
 #include "common/evaluation/team_recorder.h"
 
@@ -88,6 +90,22 @@ TEST(TeamRecorder, TrajectoryLengthUsesOdometryAndBytesAreCategorised) {
   EXPECT_FALSE(r.record().team_bytes.contains("zz"));
   EXPECT_FALSE(r.on_pose("zz", 11.0, pose_at(0, 0, 0)));
   EXPECT_EQ(r.record().team_messages.at("a").at("incremental_map"), 2u);
+}
+
+TEST(TeamRecorder, OrientationsFollowThePositions) {
+  const auto t = team();
+  TeamRecorder r(t);
+  r.start(0.0);
+  v1::RobotPose turned = pose_at(1.0, 0.0, 0.0);
+  auto* q = turned.mutable_pose()->mutable_orientation();
+  q->set_w(2.0), q->set_z(2.0);  // 90 deg about z, not normalised on the wire
+  r.on_pose("a", 0.0, pose_at(0.0, 0.0, 0.0));  // no orientation on the wire: identity
+  r.on_pose("a", 1.0, turned);
+  const RobotTrack& a = r.record().robots.at("a");
+  ASSERT_EQ(a.orientations.size(), a.positions_m.size());
+  EXPECT_TRUE(a.orientations[0].isApprox(Eigen::Quaterniond::Identity()));
+  EXPECT_NEAR(a.orientations[1].w(), std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(a.orientations[1].z(), std::sqrt(0.5), 1e-12);
 }
 
 TEST(TeamRecorder, StatusCountersCountFromTheStart) {
