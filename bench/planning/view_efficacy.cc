@@ -278,10 +278,10 @@ int main(int argc, char** argv) {
   }
 
   // Each species' voxels per supervoxel of its own map (the targets' voxel sets).
-  std::vector<std::unordered_map<uint64_t, std::vector<perception::VoxelKey>>> members(robots.size());
+  std::vector<std::unordered_map<uint64_t, std::vector<core::GridCell>>> members(robots.size());
   for (size_t k = 0; k < robots.size(); ++k)
     for (const perception::VoxelView& v : robots[k].map->voxels())
-      members[k][robots[k].segmenter->supervoxel_of({v.key.ix, v.key.iy, v.key.iz})].push_back(v.key);
+      members[k][robots[k].segmenter->supervoxel_of({v.key.x, v.key.y, v.key.z})].push_back(v.key);
 
   std::map<std::string, Outcome> outcomes;
   const int min_patch = team.params.min_ise_patch_voxels;
@@ -313,7 +313,7 @@ int main(int argc, char** argv) {
       const double side = (sensor - target->center).dot(target->normal);
       double short_density = 0.0;
       std::map<core::CoverageGap, int> gaps;
-      for (const perception::VoxelKey& key : voxels) {
+      for (const core::GridCell& key : voxels) {
         const auto view = trial.map->find(key);
         if (!view) continue;
         const auto before = r.map->find(key);
@@ -321,7 +321,7 @@ int main(int argc, char** argv) {
         if (view->covered()) ++covered;
         else {
           ++gaps[view->coverage_gap];
-          open_voxels.insert({key.ix, key.iy, key.iz});
+          open_voxels.insert({key.x, key.y, key.z});
         }
         const double offset = (view->mean.cast<double>() - target->center).dot(target->normal);
         if (offset * side >= -0.03 * std::abs(side) / std::max(1e-6, std::abs(side)) || std::abs(offset) < 0.03) {
@@ -356,7 +356,7 @@ int main(int argc, char** argv) {
       Outcome& out = outcomes[r.species.name];
       for (const auto& [sv_key, sv_voxels] : members[k]) {
         bool was_open = false, now_complete = true;
-        for (const perception::VoxelKey& key : sv_voxels) {
+        for (const core::GridCell& key : sv_voxels) {
           const auto b = r.map->find(key);
           const auto a = trial.map->find(key);
           const bool before_ok = b && b->covered(), after_ok = a && a->covered();

@@ -33,12 +33,12 @@ Eigen::Vector3d PerceptionMap::centre_of(const octomap::OcTreeKey& key) const {
           (static_cast<int>(key[2]) - kOctreeKeyOffset + 0.5) * r};
 }
 
-Eigen::Vector3d PerceptionMap::centre_of(const VoxelKey& key) const {
+Eigen::Vector3d PerceptionMap::centre_of(const core::GridCell& key) const {
   const double r = params_.resolution_m;
-  return {(key.ix + 0.5) * r, (key.iy + 0.5) * r, (key.iz + 0.5) * r};
+  return {(key.x + 0.5) * r, (key.y + 0.5) * r, (key.z + 0.5) * r};
 }
 
-VoxelKey PerceptionMap::key_of(const Eigen::Vector3d& p) const {
+core::GridCell PerceptionMap::key_of(const Eigen::Vector3d& p) const {
   const double r = params_.resolution_m;
   return {static_cast<int32_t>(std::floor(p.x() / r)), static_cast<int32_t>(std::floor(p.y() / r)),
           static_cast<int32_t>(std::floor(p.z() / r))};
@@ -356,7 +356,7 @@ VoxelView PerceptionMap::view_of(const octomap::OcTreeKey& key, const VoxelData&
   return v;
 }
 
-std::optional<VoxelView> PerceptionMap::find(const VoxelKey& key) const {
+std::optional<VoxelView> PerceptionMap::find(const core::GridCell& key) const {
   octomap::OcTreeKey k;
   if (!to_octree_key(key, k)) return std::nullopt;
   const VoxelNode* node = tree_.search(k);

@@ -64,9 +64,9 @@ class PerceptionMap {
   // non-finite sensor origin or a null point buffer; the map is then unchanged.
   IntegrationStats integrate(const ScanPoints& scan, const std::vector<OrientedBox>& teammates);
 
-  VoxelKey key_of(const Eigen::Vector3d& p) const;
-  Eigen::Vector3d centre_of(const VoxelKey& key) const;
-  std::optional<VoxelView> find(const VoxelKey& key) const;
+  core::GridCell key_of(const Eigen::Vector3d& p) const;
+  Eigen::Vector3d centre_of(const core::GridCell& key) const;
+  std::optional<VoxelView> find(const core::GridCell& key) const;
 
   size_t voxel_count() const { return voxel_count_; }
   // Every occupied voxel (snapshot for the evaluator, full deltas after a restart).

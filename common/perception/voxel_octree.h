@@ -11,6 +11,7 @@
 #include <octomap/OcTreeBaseImpl.h>
 #include <octomap/OcTreeDataNode.h>
 
+#include "common/core/seed_key.h"
 #include "common/perception/voxel_data.h"
 
 namespace hexplore::perception {
@@ -33,23 +34,18 @@ class VoxelOcTree : public octomap::OcTreeBaseImpl<VoxelNode, octomap::AbstractO
   VoxelNode* find_or_create(const octomap::OcTreeKey& key, bool& created);
 };
 
-// Integer grid index of a voxel: centre = (ix + 0.5) * resolution (hexplore.v1.Voxel keys).
-struct VoxelKey {
-  int32_t ix = 0;
-  int32_t iy = 0;
-  int32_t iz = 0;
-  bool operator==(const VoxelKey&) const = default;
-};
+// A voxel's integer grid index is a core::GridCell: centre = (x + 0.5) * resolution (the
+// hexplore.v1.Voxel keys; the high-level map's voxel samples use the same type).
 
 inline constexpr int32_t kOctreeKeyOffset = 32768;  // octomap's tree_max_val at depth 16
 
-inline VoxelKey to_voxel_key(const octomap::OcTreeKey& k) {
+inline core::GridCell to_voxel_key(const octomap::OcTreeKey& k) {
   return {static_cast<int32_t>(k[0]) - kOctreeKeyOffset, static_cast<int32_t>(k[1]) - kOctreeKeyOffset,
           static_cast<int32_t>(k[2]) - kOctreeKeyOffset};
 }
 // False when the index lies outside the octree's range.
-inline bool to_octree_key(const VoxelKey& v, octomap::OcTreeKey& out) {
-  const int32_t c[3] = {v.ix + kOctreeKeyOffset, v.iy + kOctreeKeyOffset, v.iz + kOctreeKeyOffset};
+inline bool to_octree_key(const core::GridCell& v, octomap::OcTreeKey& out) {
+  const int32_t c[3] = {v.x + kOctreeKeyOffset, v.y + kOctreeKeyOffset, v.z + kOctreeKeyOffset};
   for (int i = 0; i < 3; ++i) {
     if (c[i] < 0 || c[i] > 0xFFFF) return false;
     out[i] = static_cast<octomap::key_type>(c[i]);

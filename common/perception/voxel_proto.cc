@@ -30,9 +30,9 @@ ScanRejection decode_scan(const v1::ScanFrame& frame, std::vector<float>& storag
 }
 
 void to_proto(const VoxelView& v, v1::Voxel* out) {
-  out->set_ix(v.key.ix);
-  out->set_iy(v.key.iy);
-  out->set_iz(v.key.iz);
+  out->set_ix(v.key.x);
+  out->set_iy(v.key.y);
+  out->set_iz(v.key.z);
   out->set_mean_x(v.mean.x());
   out->set_mean_y(v.mean.y());
   out->set_mean_z(v.mean.z());
@@ -58,9 +58,9 @@ v1::OccupiedVoxels to_occupied_voxels(const std::vector<VoxelView>& voxels, doub
   out.set_resolution_m(resolution_m);
   out.mutable_keys_xyz()->Reserve(static_cast<int>(voxels.size() * 3));
   for (const VoxelView& v : voxels) {
-    out.add_keys_xyz(v.key.ix);
-    out.add_keys_xyz(v.key.iy);
-    out.add_keys_xyz(v.key.iz);
+    out.add_keys_xyz(v.key.x);
+    out.add_keys_xyz(v.key.y);
+    out.add_keys_xyz(v.key.z);
   }
   return out;
 }

@@ -13,7 +13,7 @@
 namespace hexplore::perception {
 
 struct VoxelView {
-  VoxelKey key;
+  core::GridCell key;
   uint32_t point_count = 0;
   Eigen::Vector3f mean = Eigen::Vector3f::Zero();            // world frame, metres
   Eigen::Matrix3f covariance = Eigen::Matrix3f::Zero();      // of the voxel's own points

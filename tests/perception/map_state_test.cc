@@ -253,7 +253,7 @@ TEST(MapState, ProtoConversion) {
   ASSERT_EQ(delta.voxels_size(), static_cast<int>(all.size()));
   EXPECT_TRUE(delta.full_snapshot());
   const v1::Voxel& v = delta.voxels(0);
-  EXPECT_EQ(v.ix(), all[0].key.ix);
+  EXPECT_EQ(v.ix(), all[0].key.x);
   EXPECT_NEAR((v.ix() + 0.5) * delta.resolution_m(), v.mean_x(), 0.075 + 1e-6);
   EXPECT_EQ(v.flags(), all[0].flags);
   const v1::OccupiedVoxels occupied = to_occupied_voxels(all, map.resolution());

@@ -89,7 +89,7 @@ TEST(Observation, OnlyObservationsInsideTheThresholdsSetTheMinima) {
   PerceptionMap map(two_species_params());
   const std::vector<float> dense = wall(0.01);
   map.integrate(scan_of(dense, {1.5, 3, 1}), {});
-  const VoxelKey key = map.key_of({1.5, 0, 1.0});
+  const core::GridCell key = map.key_of({1.5, 0, 1.0});
   const double angle = map.find(key)->observation_angle_deg;
   // Closer but at a grazing angle: must not replace the distance.
   map.integrate(scan_of(dense, {-1.0, 0.5, 1}), {});

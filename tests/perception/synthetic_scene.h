@@ -49,29 +49,29 @@ inline MapParams two_species_params(const core::SpeciesConfig& own = core::built
 inline constexpr uint32_t kSlugcatBit = 1;
 inline constexpr uint32_t kMr1000Bit = 2;
 
-inline uint64_t pack(const VoxelKey& k) {
-  return (static_cast<uint64_t>(static_cast<uint32_t>(k.ix)) & 0xFFFFF) |
-         ((static_cast<uint64_t>(static_cast<uint32_t>(k.iy)) & 0xFFFFF) << 20) |
-         ((static_cast<uint64_t>(static_cast<uint32_t>(k.iz)) & 0xFFFFF) << 40);
+inline uint64_t pack(const core::GridCell& k) {
+  return (static_cast<uint64_t>(static_cast<uint32_t>(k.x)) & 0xFFFFF) |
+         ((static_cast<uint64_t>(static_cast<uint32_t>(k.y)) & 0xFFFFF) << 20) |
+         ((static_cast<uint64_t>(static_cast<uint32_t>(k.z)) & 0xFFFFF) << 40);
 }
 
 // Whether `to` is reachable from `from` over voxels low-risk for `species_bit`, 26-connected.
-inline bool reachable(const PerceptionMap& map, const VoxelKey& from, const VoxelKey& to, uint32_t species_bit) {
+inline bool reachable(const PerceptionMap& map, const core::GridCell& from, const core::GridCell& to, uint32_t species_bit) {
   std::unordered_set<uint64_t> passable;
   for (const VoxelView& v : map.voxels()) {
     if ((v.low_risk_species_mask & species_bit) != 0) passable.insert(pack(v.key));
   }
   if (!passable.count(pack(from)) || !passable.count(pack(to))) return false;
   std::unordered_set<uint64_t> seen{pack(from)};
-  std::vector<VoxelKey> stack{from};
+  std::vector<core::GridCell> stack{from};
   while (!stack.empty()) {
-    const VoxelKey k = stack.back();
+    const core::GridCell k = stack.back();
     stack.pop_back();
     if (k == to) return true;
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
-          const VoxelKey n{k.ix + dx, k.iy + dy, k.iz + dz};
+          const core::GridCell n{k.x + dx, k.y + dy, k.z + dz};
           if (passable.count(pack(n)) && seen.insert(pack(n)).second) stack.push_back(n);
         }
   }

@@ -89,8 +89,8 @@ TEST(Terrain, FifteenCentimetreStepBlocksTheWheeledSpeciesButNotTheTrackedOne) {
   PerceptionMap map(two_species_params());
   const std::vector<float> pts = step_scene(0.15);
   map.integrate(scan_of(pts, {-1, 0, 1}), {});
-  const VoxelKey low = map.key_of({-1.5, 0, 0.05});
-  const VoxelKey high = map.key_of({1.5, 0, 0.2});
+  const core::GridCell low = map.key_of({-1.5, 0, 0.05});
+  const core::GridCell high = map.key_of({1.5, 0, 0.2});
   EXPECT_TRUE(testing::reachable(map, low, high, kSlugcatBit));
   EXPECT_FALSE(testing::reachable(map, low, high, kMr1000Bit));
   // Away from the edge, both floors stay fine for the wheeled robot.
@@ -102,8 +102,8 @@ TEST(Terrain, LowStepIsTraversableByBoth) {
   PerceptionMap map(two_species_params());
   const std::vector<float> pts = step_scene(0.04);
   map.integrate(scan_of(pts, {-1, 0, 1}), {});
-  const VoxelKey low = map.key_of({-1.5, 0, 0.05});
-  const VoxelKey high = map.key_of({1.5, 0, 0.09});
+  const core::GridCell low = map.key_of({-1.5, 0, 0.05});
+  const core::GridCell high = map.key_of({1.5, 0, 0.09});
   EXPECT_TRUE(testing::reachable(map, low, high, kSlugcatBit));
   EXPECT_TRUE(testing::reachable(map, low, high, kMr1000Bit));
 }
@@ -116,7 +116,7 @@ TEST(Terrain, HalfMetreOverhangBlocksWheeledClearanceOnly) {
   map.integrate(scan_of(pts, {-1.5, 0, 0.35}), {});
   int under = 0;
   for (const VoxelView& v : map.voxels()) {
-    if (v.key.iz == 3) {
+    if (v.key.z == 3) {
       EXPECT_FALSE(v.ground()) << "an overhang seen from below faces down: facade";
       EXPECT_LT(v.normal.z(), -0.99f);
       continue;
@@ -128,7 +128,7 @@ TEST(Terrain, HalfMetreOverhangBlocksWheeledClearanceOnly) {
     EXPECT_FALSE(v.low_risk_species_mask & kMr1000Bit) << "0.5 m is below MR1000's 0.8 m body";
   }
   EXPECT_GT(under, 50);
-  const VoxelKey open = map.key_of({-1.5, 0, 0.05});
+  const core::GridCell open = map.key_of({-1.5, 0, 0.05});
   EXPECT_EQ(map.find(open)->low_risk_species_mask, kSlugcatBit | kMr1000Bit);
 }
 
@@ -159,8 +159,8 @@ TEST(Terrain, StairsAreClimbableByTheTrackedSpeciesOnly) {
     x += 0.30;
   }
   map.integrate(scan_of(pts, {-1, 0, 1.5}), {});
-  const VoxelKey bottom = map.key_of({-1.5, 0, 0.05});
-  const VoxelKey top = map.key_of({x + 1.0, 0, z - 0.02});  // z = 0.9 sits on a cell border
+  const core::GridCell bottom = map.key_of({-1.5, 0, 0.05});
+  const core::GridCell top = map.key_of({x + 1.0, 0, z - 0.02});  // z = 0.9 sits on a cell border
   ASSERT_TRUE(map.find(top).has_value());
   EXPECT_TRUE(testing::reachable(map, bottom, top, kSlugcatBit));
   EXPECT_FALSE(testing::reachable(map, bottom, top, kMr1000Bit));
@@ -204,8 +204,8 @@ TEST(Terrain, StairsSeenFromTheirTopLandingStayGround) {
     EXPECT_GT(v.normal.z(), 0.0f) << "at " << v.mean.transpose();
   }
   EXPECT_GT(on_flight, 200);
-  const VoxelKey bottom = map.key_of({-1.5, 0, 0.05});
-  const VoxelKey landing = map.key_of({f.top_x + 2.0, 0, f.top_z - 0.02});
+  const core::GridCell bottom = map.key_of({-1.5, 0, 0.05});
+  const core::GridCell landing = map.key_of({f.top_x + 2.0, 0, f.top_z - 0.02});
   EXPECT_TRUE(testing::reachable(map, bottom, landing, kSlugcatBit));
 }
 
@@ -218,7 +218,7 @@ TEST(Terrain, FloorAtTheFootOfARiserIsAStepNotAnOverhang) {
   map.integrate(scan_of(pts, {-1, 0, 1}), {});
   int foot = 0;
   for (const VoxelView& v : map.voxels()) {
-    if (!inside_xy(v, 0.0, 0.07, -1.2, 1.2) || v.key.iz != 0) continue;  // the column holding the riser
+    if (!inside_xy(v, 0.0, 0.07, -1.2, 1.2) || v.key.z != 0) continue;  // the column holding the riser
     ++foot;
     EXPECT_TRUE(v.low_risk_species_mask & kSlugcatBit) << "at " << v.mean.transpose();
     EXPECT_FALSE(v.low_risk_species_mask & kMr1000Bit) << "at " << v.mean.transpose();
