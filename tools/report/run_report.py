@@ -151,9 +151,12 @@ def topdown_figure(run, plt, np):
         # A height image: the highest mapped point of each cell, so roofs and upper floors show.
         cell = grid_spacing(points, np)
         lo = points[:, :2].min(axis=0)
-        ij = np.floor((points[:, :2] - lo) / cell + 1e-6).astype(int)
+        # Points are voxel centres, whole cells apart from the lowest: round, not floor (float32
+        # centres land a hair either side of a cell boundary and would leave empty stripes).
+        ij = np.rint((points[:, :2] - lo) / cell).astype(int)
         image = np.full((ij[:, 1].max() + 1, ij[:, 0].max() + 1), np.nan)
         np.fmax.at(image, (ij[:, 1], ij[:, 0]), points[:, 2])
+        lo = lo - cell / 2  # cell edges, not centres
         hi = lo + cell * np.array(image.shape[::-1])
         im = ax.imshow(image, origin="lower", extent=(lo[0], hi[0], lo[1], hi[1]), cmap="viridis",
                        interpolation="nearest")
