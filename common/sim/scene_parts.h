@@ -56,6 +56,7 @@ struct OfficeLayout {
 OfficeLayout office_layout(uint64_t seed);
 
 SceneInfo make_single_building(uint64_t seed);
+SceneInfo make_small_building(uint64_t seed);
 SceneInfo make_multi_building(uint64_t seed);
 SceneInfo make_corridor_stairs(uint64_t seed);
 SceneInfo make_office(uint64_t seed);

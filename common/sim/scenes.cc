@@ -9,7 +9,7 @@
 namespace hexplore::sim {
 
 std::vector<std::string> scene_names() {
-  return {"single-building", "multi-building", "corridor-stairs", "office", "multi-storey"};
+  return {"single-building", "small-building", "multi-building", "corridor-stairs", "office", "multi-storey"};
 }
 
 bool is_builtin_scene(const std::string& name) {
@@ -20,6 +20,7 @@ bool is_builtin_scene(const std::string& name) {
 
 SceneInfo generate_scene(const std::string& name, uint64_t seed) {
   if (name == "single-building") return detail::make_single_building(seed);
+  if (name == "small-building") return detail::make_small_building(seed);
   if (name == "multi-building") return detail::make_multi_building(seed);
   if (name == "corridor-stairs") return detail::make_corridor_stairs(seed);
   if (name == "office") return detail::make_office(seed);

@@ -22,7 +22,7 @@ struct SceneInfo {
   std::vector<Eigen::Vector3d> suggested_starts;  // free flat ground where robots can be spawned
 };
 
-// Names of the built-in scenes: single-building, multi-building, corridor-stairs, office,
+// Names of the built-in scenes: single-building, small-building, multi-building, corridor-stairs, office,
 // multi-storey.
 std::vector<std::string> scene_names();
 bool is_builtin_scene(const std::string& name);

@@ -113,6 +113,37 @@ TEST(Scenes, SingleBuildingAnnexAndUpperFloorNeedTheTrackedRobot) {
   EXPECT_GT(wheeled[2], 2000u);  // but it does get around the outside and into the main building
 }
 
+// small-building keeps that character: the annex behind the debris yard is the tracked
+// robot's, and there is ground to stand on 7 m and more from every facade of the 7 m building
+// (seen within 45 deg up to its top).
+TEST(Scenes, SmallBuildingAnnexNeedsTheTrackedRobotAndEveryFacadeHasRoomInFront) {
+  const auto scene = generate_scene("small-building", 1);
+  const RayCaster caster(scene.mesh);
+  auto annex_cells = [&](const core::SpeciesConfig& species, const Eigen::Vector3d& start) {
+    size_t annex = 0, total = 0;
+    std::array<bool, 4> stand_off{};  // west, east, south, north of the main building
+    const Eigen::AlignedBox3d everywhere(Eigen::Vector3d(-10, -10, -1), Eigen::Vector3d(30, 30, 10));
+    const std::vector<Eigen::Vector3d> starts = {start};
+    for (const auto& p : reachable_ground(caster, species, starts, everywhere)) {
+      ++total;
+      annex += p.x() > 13.8 && p.x() < 18.2 && p.y() > 3.3 && p.y() < 8.7;
+      const bool beside_x = p.y() > 3 && p.y() < 11;
+      const bool beside_y = p.x() > 3 && p.x() < 11;
+      stand_off[0] = stand_off[0] || (beside_x && p.x() < 3 - 7.0);
+      stand_off[1] = stand_off[1] || (beside_x && p.x() > 18.5 + 7.0);
+      stand_off[2] = stand_off[2] || (beside_y && p.y() < 3 - 7.0);
+      stand_off[3] = stand_off[3] || (beside_y && p.y() > 11 + 7.0);
+    }
+    return std::make_tuple(annex, total, stand_off);
+  };
+  const auto [tracked_annex, tracked_total, tracked_room] = annex_cells(core::builtin_slugcat(), {2, -3, 0});
+  const auto [wheeled_annex, wheeled_total, wheeled_room] = annex_cells(core::builtin_mr1000(), {4, -3, 0});
+  EXPECT_GT(tracked_annex, 50u);
+  EXPECT_EQ(wheeled_annex, 0u);
+  for (int side = 0; side < 4; ++side) EXPECT_TRUE(wheeled_room[size_t(side)]) << "side " << side;
+  EXPECT_GT(wheeled_total, 2000u);
+}
+
 // The OSRF collapsed town (third-party COLLADA-derived geometry): loads, and a robot of
 // each species is placed in a street and driven along it.
 TEST(Scenes, OsrfCollapsedTownLoadsAndRobotsDrive) {
