@@ -21,10 +21,6 @@ bool open_view(const TaskView& v, const highlevel::HighLevelMap& map, const Give
   return std::any_of(v.targets.begin(), v.targets.end(), [&](uint64_t t) { return open_target(t, map, ledger); });
 }
 
-bool open_aim(const AimWindow& aim, const highlevel::HighLevelMap& map, const GiveUpLedger& ledger) {
-  return std::any_of(aim.targets.begin(), aim.targets.end(), [&](uint64_t t) { return open_target(t, map, ledger); });
-}
-
 constexpr double kProgressM = 0.5;    // moving this far counts as progress
 constexpr double kTrailStepM = 0.5;   // trail points are this far apart
 constexpr size_t kTrailLength = 12;
@@ -152,7 +148,7 @@ std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector
     const size_t was = aim_index_;
     const bool time_left = was < aims_.size() && now_s - aim_start_s_ < aim_s_;
     while (aim_index_ < aims_.size() &&
-           (!open_aim(aims_[aim_index_], map, ledger) || now_s - aim_start_s_ >= aim_s_)) {
+           (!open_target(aims_[aim_index_].target, map, ledger) || now_s - aim_start_s_ >= aim_s_)) {
       ++aim_index_;
       aim_start_s_ = now_s;
     }
@@ -203,12 +199,12 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
   // Every consecutive view within reach is observed from here at once, for its targets that
   // are still open; a view with none left costs no dwell.
   observed_targets_.clear();
-  aim_targets_.clear();
+  aims_.clear();
   int facade_views = 0;
   for (; next_ < route_.size() && reached(route_[next_], position); ++next_) {
     const TaskView& v = route_[next_];
     ++counters_.views_reached;
-    const size_t aims_before = aim_targets_.size();
+    const size_t aims_before = aims_.size();
     for (uint64_t t : v.targets) {
       // Observed from here a moment ago and not judged yet: a second look from the same spot
       // would only delay the verdict (the next view of it stands elsewhere if it fails).
@@ -216,17 +212,14 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
       observed_targets_.push_back(t);
       if (v.facade) add_aim(t, map);
     }
-    if (aim_targets_.size() > aims_before) ++facade_views;
+    if (aims_.size() > aims_before) ++facade_views;
   }
   driving_ = false;
-  aims_.clear();
-  if (aim_targets_.empty() || options_.observation_time_s <= 0.0) {  // ground views: observed on arrival
+  if (aims_.empty() || options_.observation_time_s <= 0.0) {  // ground views: observed on arrival
+    aims_.clear();
     pending_.push_back({observed_targets_, position, now_s + options_.settle_s});
     return std::nullopt;
   }
-  const bool windows = options_.aim_each_target && options_.dwell == FollowerOptions::Dwell::kPerView;
-  aims_ = aim_windows(position, aim_targets_, windows ? options_.aim_window_yaw_deg : 0.0,
-                      windows ? options_.aim_window_pitch_deg : 0.0);
   aim_s_ = plan_aims(facade_views);
   observing_ = true;
   observe_start_s_ = now_s;
@@ -239,8 +232,8 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
 void RouteFollower::add_aim(uint64_t target, const highlevel::HighLevelMap& map) {
   const highlevel::Supervoxel* sv = map.find(target);
   if (sv == nullptr || !sv->facade()) return;
-  if (std::any_of(aim_targets_.begin(), aim_targets_.end(), [&](const AimTarget& a) { return a.key == target; })) return;
-  aim_targets_.push_back({target, sv->center});
+  if (std::any_of(aims_.begin(), aims_.end(), [&](const Aim& a) { return a.target == target; })) return;
+  aims_.push_back({target, sv->center});
 }
 
 double RouteFollower::plan_aims(int facade_views) {

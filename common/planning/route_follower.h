@@ -26,7 +26,6 @@
 #include <Eigen/Core>
 
 #include "common/highlevel/high_level_map.h"
-#include "common/planning/aim_windows.h"
 #include "common/planning/give_up_ledger.h"
 #include "common/planning/planning_types.h"
 
@@ -50,10 +49,6 @@ struct FollowerOptions {
   // Whether the sensors aim at one target at a time (a gimbal): then the targets take turns;
   // otherwise all are observed at once and the aims only pace the dwell.
   bool aim_each_target = false;
-  // Half the field of view (yaw, pitch) of the aimed sensor, less a margin: with kPerView the
-  // targets within it are aimed at together (aim_windows.h). 0: one target per aim.
-  double aim_window_yaw_deg = 0.0;
-  double aim_window_pitch_deg = 0.0;
   double min_aim_s = 0.5;           // shortest look at anything: one scan period of the simulated LiDARs
   double settle_s = 2.0;            // map lag: coverage is judged this long after the observation
   // A new round keeps the stretch being worked on: the old route's views that followed the leg
@@ -176,12 +171,14 @@ class RouteFollower {
   std::vector<TaskView> route_;
   size_t next_ = 0;  // the view being driven to
 
-  // Observing: the view(s) reached, their open facade targets, the windows the sensors aim at
-  // in turn, the clock.
+  // Observing: the view(s) reached, their open facade targets to aim at, the clock.
+  struct Aim {
+    uint64_t target;
+    Eigen::Vector3d at;
+  };
   bool observing_ = false;
   std::vector<uint64_t> observed_targets_;
-  std::vector<AimTarget> aim_targets_;
-  std::vector<AimWindow> aims_;
+  std::vector<Aim> aims_;
   size_t aim_index_ = 0;
   double aim_start_s_ = 0.0;
   double aim_s_ = 0.0;  // how long one aim lasts at most (set when the dwell begins)

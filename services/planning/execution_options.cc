@@ -28,15 +28,6 @@ ExecutionOptions execution_options(const service::Options& opts, const core::Spe
       species.observation_speed_views_per_s > 0 ? 1.0 / species.observation_speed_views_per_s : 0.0;
   follow.aim_each_target = std::any_of(species.lidars.begin(), species.lidars.end(),
                                        [](const core::LidarConfig& l) { return l.gimbal; });
-  // What one aim of the gimbal covers: half its LiDAR's field of view, less what a target's
-  // extent and the sensor's height above the robot's position take off its edges.
-  const double window_margin_deg = opts.number("aim-window-margin-deg", 3.0, 0.0, 90.0);
-  for (const auto& l : species.lidars)
-    if (l.gimbal) {
-      follow.aim_window_yaw_deg = std::max(0.0, 0.5 * (l.horizontal_max_deg - l.horizontal_min_deg) - window_margin_deg);
-      follow.aim_window_pitch_deg = std::max(0.0, 0.5 * (l.vertical_max_deg - l.vertical_min_deg) - window_margin_deg);
-    }
-  if (!opts.flag("aim-windows", true)) follow.aim_window_yaw_deg = follow.aim_window_pitch_deg = 0.0;
   if (opts.choice("dwell", "per-view", {"per-view", "per-target"}) == "per-target")
     follow.dwell = planning::FollowerOptions::Dwell::kPerTarget;
   if (!opts.flag("observe", true)) follow.observation_time_s = 0.0;

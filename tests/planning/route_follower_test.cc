@@ -183,27 +183,6 @@ TEST(RouteFollower, PerViewTheTargetsOfAViewShareOneObservationTime) {
   EXPECT_FALSE(leave->observing);
 }
 
-TEST(RouteFollower, PerViewAGimbalAimsOnceAtTargetsThatFitInItsFieldOfView) {
-  // The three targets lie side by side on one wall: one aim of the MR1000's 90 x 22.5 deg
-  // LiDAR (less the margin) holds them all, so it looks at all three for the view's 10 s
-  // instead of at each for a third of it.
-  Drive d;
-  d.options.aim_each_target = true;
-  d.options.aim_window_yaw_deg = 42.0;
-  d.options.aim_window_pitch_deg = 8.25;
-  RouteFollower f(d.options, 0);
-  const TaskView three = view_of_three(d.map, {6.5, 6.5, 0});
-  const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
-  f.set_route({three, next}, {1.5, 1.5, 0}, d.map);
-  const auto first = f.step(0.0, three.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
-  ASSERT_TRUE(first);
-  EXPECT_FALSE(first->path.goal.look_at.isApprox(d.map.find(kWall)->center));  // the window's middle
-  for (double t = 0.2; t < 9.9; t += 0.2) EXPECT_FALSE(f.step(t, three.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
-  const auto leave = f.step(10.1, three.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
-  ASSERT_TRUE(leave);
-  EXPECT_FALSE(leave->observing);
-}
-
 TEST(RouteFollower, FixedSensorsObserveAllTargetsAtOnceForTheSumOfTheirTimes) {
   Drive d;
   d.options.observation_time_s = 0.1;  // a SLUGCAT: ten targets a second, no gimbal
