@@ -6,8 +6,8 @@
 // observation time (at least min_dwell_s) and the target is still incomplete a settle time
 // later, that counts as an observation in the GiveUpLedger, like one made at a task view. So
 // targets the coverage criterion cannot complete (a corner whose voxels face two ways, a
-// ceiling only seen at 45 degrees) are given up as robots pass them from two spots, instead
-// of each costing dedicated visits; and ground a robot drove across counts as reached.
+// ceiling only seen at 45 degrees) are given up as robots pass them, instead of each costing
+// a dedicated visit; and ground a robot drove across counts as reached.
 
 #include <cstdint>
 #include <unordered_map>

@@ -48,7 +48,7 @@ class PlanningService : public service::Service {
   // --peer-timeout-s X (default params.liveness.planning_team_s), --peer-stuck-s X (default 30.0); the
   // follower's --reach-m X (1.0), --blocked-s X (2.0), --stuck-s X (8.0), --settle-s X (2.0),
   // --keep-stretch-m X (5.0; under --reach-m keeps only the leg), --observe true|false (dwell at facade views, default true); the ledger's
-  // --give-up-views N (2) and --give-up-attempts N (3); --trace-dir DIR (per-round traces).
+  // --give-up-views N (1) and --give-up-attempts N (3); --trace-dir DIR (per-round traces).
   void setup(service::ServiceContext& context) override;
   void fill_status(v1::ServiceStatus& status) override;
 

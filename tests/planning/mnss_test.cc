@@ -139,7 +139,7 @@ TEST(Mnss, NoViewStandsWhereItsTargetWasObservedInVain) {
   const TeamCapabilities& caps = b.caps;
   const PlannerOptions& o = b.o;
   highlevel::HighLevelMap& map = b.map;
-  GiveUpLedger ledger;
+  GiveUpLedger ledger{GiveUpRules{.views = 2}};  // two looks: a first look is judged without giving up
   auto tours = [&] {
     const MapContext ctx(map, o, std::nullopt, &ledger);
     const auto views = generate_task_views(ctx, caps, o);

@@ -22,7 +22,7 @@ highlevel::Supervoxel facade(uint64_t key, const Eigen::Vector3d& c, const Eigen
 struct World {
   core::TeamConfig team;
   highlevel::HighLevelMap map{{2, 1}};
-  GiveUpLedger ledger;
+  GiveUpLedger ledger{GiveUpRules{.views = 2}};  // two looks: a first look is judged without giving up
   PlannerOptions planner;
   PassingOptions passing;
   World() {

@@ -124,7 +124,7 @@ TEST(TaskViews, ATargetObservedInVainFromASpotIsNextViewedFromAnother) {
   highlevel::HighLevelMap map({2, 1});
   map.apply(up);
   Fixture f;
-  GiveUpLedger ledger;
+  GiveUpLedger ledger{GiveUpRules{.views = 2}};  // two looks: a first look is judged without giving up
   const MapContext fresh(map, f.options, std::nullopt, &ledger);
   auto views = generate_task_views(fresh, f.caps, f.options);
   ASSERT_EQ(views.size(), 1u);

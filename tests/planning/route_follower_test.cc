@@ -73,7 +73,7 @@ void set_covered(highlevel::HighLevelMap& map, uint64_t key) {
 
 struct Drive {
   highlevel::HighLevelMap map = flat_map();
-  GiveUpLedger ledger;
+  GiveUpLedger ledger{GiveUpRules{.views = 2}};  // two looks: a first look is judged without giving up
   FollowerOptions options;
   std::unordered_set<uint64_t> keep_off;
   Drive() { options.observation_time_s = 10.0; }
@@ -565,8 +565,17 @@ TEST(RouteFollower, AViewBehindAWallIsNotPartOfTheStretch) {
   EXPECT_EQ(f.counters().stretch_views_kept, 0);
 }
 
-TEST(GiveUpLedger, GivesUpAfterTwoDistinctSpotsOrThreeTries) {
+TEST(GiveUpLedger, ByDefaultGivesUpAfterOneLookOrThreeTries) {
   GiveUpLedger l;
+  EXPECT_TRUE(l.observed(1, {0, 0, 0}, 30));  // stayed incomplete after a look
+  EXPECT_TRUE(l.given_up(1, 30));
+  EXPECT_FALSE(l.failed(2, 10));  // blocked on the way: no look
+  EXPECT_FALSE(l.failed(2, 10));
+  EXPECT_TRUE(l.failed(2, 10));  // three tries of any kind
+}
+
+TEST(GiveUpLedger, WithTwoViewsGivesUpAfterTwoDistinctSpotsOrThreeTries) {
+  GiveUpLedger l{GiveUpRules{.views = 2}};
   EXPECT_FALSE(l.observed(1, {0, 0, 0}, 30));
   EXPECT_FALSE(l.observed(1, {0.5, 0, 0}, 30));  // the same spot, again
   EXPECT_FALSE(l.given_up(1, 30));
@@ -579,7 +588,7 @@ TEST(GiveUpLedger, GivesUpAfterTwoDistinctSpotsOrThreeTries) {
 }
 
 TEST(GiveUpLedger, ATargetIsTriedFromTheSpotsItStayedOpenFromAndTheirSurroundings) {
-  GiveUpLedger l;
+  GiveUpLedger l{GiveUpRules{.views = 2}};
   EXPECT_FALSE(l.tried_from(1, {0, 0, 0}));
   l.observed(1, {0, 0, 0.4}, 30);
   EXPECT_TRUE(l.tried_from(1, {1.0, 0, 0}));   // ground 1 m from where the robot stood
