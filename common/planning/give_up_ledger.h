@@ -7,7 +7,7 @@
 // what the first left open: in the default team's 3,600 s missions the MR1000's look from a
 // second spot completed 8 of 86 and 6 of 88 such targets, the SLUGCAT's 6 of 61 and 8 of 58,
 // and the second looks, at targets scattered round the site, are what kept small-building's
-// missions going for 1,700 s and more (1,000-1,100 s with one look, the same completeness;
+// missions going for 1,700 s and more (960-1,210 s with one look, the same completeness;
 // common/planning/README.md, "A mission that ends"). A given-up target comes back when its
 // supervoxel has grown markedly since (new voxels: the neighbourhood changed, e.g. a door
 // opened onto it), so giving up is never final.
