@@ -109,9 +109,16 @@ void update_geometry(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLooku
   // flight down (a ceiling: facade) behind a robot that just climbed it. A ground robot sees
   // a shallow surface from above only on its top side, so a shallow plane seen from above
   // faces up; steeper ones, and any seen from below (ceilings), face the sensor.
+  //
+  // A steep plane changes sides only for a ray within gamma_th of it, one that could observe it.
+  // A grazing ray says little about which side is open: at a building's corner the fitted plane
+  // bisects the edge, and a sensor that sees one face from far along it is behind that plane,
+  // so turning towards it points the edge's normal into the building; the supervoxel it joins
+  // then faces inwards and gets views inside the wall that never complete it.
   const Eigen::Vector3d view = sensor - (centre + mean);
-  if (!d.has_normal() || orient_to_sensor) {
-    const bool shallow = std::abs(normal.z()) >= std::cos(params.s_th_deg * M_PI / 180.0);
+  const bool shallow = std::abs(normal.z()) >= std::cos(params.s_th_deg * M_PI / 180.0);
+  const bool frontal = std::abs(normal.dot(view)) >= std::cos(params.gamma_th_deg * M_PI / 180.0) * view.norm();
+  if (!d.has_normal() || (orient_to_sensor && (shallow || frontal))) {
     if (shallow && view.z() > 0.0 ? normal.z() < 0.0 : normal.dot(view) < 0.0) normal = -normal;
   } else {
     float prev[3];

@@ -28,9 +28,9 @@ Eigen::Vector3d voxel_mean(const VoxelData& d, const Eigen::Vector3d& centre);
 
 // Recomputes the normal and the empty-neighbour count of the voxel at `key` from the fused
 // Gaussian of its 3x3x3 neighbourhood. The normal is the eigenvector of the smallest eigenvalue,
-// oriented (when `orient_to_sensor` or when the voxel had none) towards `sensor`, or up when
-// the plane is shallower than s_th and the sensor above it; else kept on the side of the
-// previous normal. A neighbourhood with too few points, or points on a line only,
+// oriented (when the voxel had none, or when `orient_to_sensor` and the plane is shallow or
+// `sensor` within gamma_th of it) towards `sensor`, or up when the plane is shallower than s_th
+// and the sensor above it; else kept on the side of the previous normal. A neighbourhood with too few points, or points on a line only,
 // leaves the previous normal.
 void update_geometry(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLookup& lookup,
                      const Eigen::Vector3d& centre, const Eigen::Vector3d& sensor, bool orient_to_sensor,
