@@ -13,6 +13,27 @@ constexpr double kRadToDeg = 180.0 / M_PI;
 // Mean z in the world frame of voxel `d` whose centre height is `centre_z`.
 double mean_z(const VoxelData& d, double centre_z) { return centre_z + d.sum[2] / static_cast<double>(d.count); }
 
+// Which side of the plane through the voxel's own points the sensor is on (a unit vector along
+// that plane's normal), or zero when those points make no plane: too few, on a line, or bent
+// (an edge runs through the voxel). A plane of points is seen only from its open side.
+Eigen::Vector3d own_points_side(const VoxelData& d, const Eigen::Vector3d& centre, const Eigen::Vector3d& sensor,
+                                double resolution) {
+  if (d.count < 4) return Eigen::Vector3d::Zero();
+  const double n = d.count;
+  const Eigen::Vector3d mean(d.sum[0] / n, d.sum[1] / n, d.sum[2] / n);
+  Eigen::Matrix3d cov;
+  cov << d.sum_sq[0], d.sum_sq[1], d.sum_sq[2], d.sum_sq[1], d.sum_sq[3], d.sum_sq[4], d.sum_sq[2], d.sum_sq[4], d.sum_sq[5];
+  cov = cov / n - mean * mean.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  eig.computeDirect(cov);
+  const double flat = eig.eigenvalues()(0), narrow = eig.eigenvalues()(1);
+  // A plane at the LiDAR's range noise has flat/narrow of a few hundredths; an L of two faces
+  // inside one voxel about a half.
+  if (narrow < 0.01 * resolution * resolution || flat > 0.25 * narrow) return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d normal = eig.eigenvectors().col(0);
+  return normal.dot(sensor - (centre + mean)) >= 0.0 ? normal : Eigen::Vector3d(-normal);
+}
+
 }  // namespace
 
 TerrainWindow TerrainWindow::from(const MapParams& params) {
@@ -110,16 +131,23 @@ void update_geometry(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLooku
   // a shallow surface from above only on its top side, so a shallow plane seen from above
   // faces up; steeper ones, and any seen from below (ceilings), face the sensor.
   //
-  // A steep plane changes sides only for a ray within gamma_th of it, one that could observe it.
-  // A grazing ray says little about which side is open: at a building's corner the fitted plane
-  // bisects the edge, and a sensor that sees one face from far along it is behind that plane,
-  // so turning towards it points the edge's normal into the building; the supervoxel it joins
-  // then faces inwards and gets views inside the wall that never complete it.
+  // A grazing ray says little about which side of a steep plane is open: at a building's corner
+  // the fitted plane bisects the edge, and a sensor that sees one face from far along it is
+  // behind that plane, so turning towards it points the edge's normal into the building; the
+  // supervoxel it joins then faces inwards and gets views inside the wall that never complete
+  // it. So a steep plane changes sides only for a ray within gamma_th of it (one that could
+  // observe it), and a new one seen at a grazing angle takes the side the sensor sees of the
+  // voxel's own points when they are planar (one face of the corner), else the sensor's.
   const Eigen::Vector3d view = sensor - (centre + mean);
   const bool shallow = std::abs(normal.z()) >= std::cos(params.s_th_deg * M_PI / 180.0);
   const bool frontal = std::abs(normal.dot(view)) >= std::cos(params.gamma_th_deg * M_PI / 180.0) * view.norm();
   if (!d.has_normal() || (orient_to_sensor && (shallow || frontal))) {
-    if (shallow && view.z() > 0.0 ? normal.z() < 0.0 : normal.dot(view) < 0.0) normal = -normal;
+    Eigen::Vector3d open_side = view;
+    if (!shallow && !frontal) {
+      const Eigen::Vector3d own = own_points_side(d, centre, sensor, res);
+      if (!own.isZero()) open_side = own;
+    }
+    if (shallow && view.z() > 0.0 ? normal.z() < 0.0 : normal.dot(open_side) < 0.0) normal = -normal;
   } else {
     float prev[3];
     d.normal(prev);

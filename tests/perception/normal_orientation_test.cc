@@ -61,6 +61,22 @@ TEST(NormalOrientation, ACornerSeenAtAGrazingAngleKeepsItsOutwardNormal) {
   }
 }
 
+TEST(NormalOrientation, ACornerSeenFaceByFaceFacesOutwards) {
+  // First the west face from the west, then the south face from the south-east: the edge voxels
+  // the second scan creates get a plane fitted across both faces, seen from just behind it. Their
+  // own points lie on the south face alone, in front of the sensor.
+  PerceptionMap map(two_species_params(core::builtin_mr1000()));
+  map.integrate(scan_of(west_face(), {-4, 1.0, 1.5}), {});
+  for (int i = 0; i < 3; ++i) map.integrate(scan_of(south_face(), {8, -3, 1.5}), {});
+  int edge = 0;
+  for (const VoxelView& v : map.voxels()) {
+    if (!near_edge(v) || v.normal.isZero()) continue;
+    ++edge;
+    EXPECT_TRUE(points_out_of_the_building(v)) << "voxel at " << v.mean.transpose() << " normal " << v.normal.transpose();
+  }
+  ASSERT_GT(edge, 10);
+}
+
 TEST(NormalOrientation, AWallSeenFromItsOtherSideTurnsToFaceTheSensor) {
   // A thin panel seen first from one side, then frontally from the other: both sides are open,
   // and the newest frontal view decides (a gate, a sheet of debris).
