@@ -54,24 +54,16 @@ fail() {
   exit 1
 }
 
-# Stated completeness, exhausted task views and no collision in one summary.json.
-check_summary() {
-  local summary=$1 what=$2
-  [ -f "$summary" ] || fail "$what: no $summary"
-  local end obs
-  end=$(sed -n 's/.*"end_reason": *"\([^"]*\)".*/\1/p' "$summary" | head -n 1)
-  obs=$(sed -n 's/.*"final_observable_completeness": *\([^,}]*\).*/\1/p' "$summary" | head -n 1)
-  echo "$what: end: $end, observable completeness: $obs (required >= $min_observable)"
-  [ "$end" = "no task views remain" ] || fail "$what: mission ended by '$end', not by exhausted task views"
-  awk -v c="$obs" -v m="$min_observable" 'BEGIN { exit !(c >= m) }' || fail "$what: observable completeness $obs < $min_observable"
-  if grep -o '"collisions": *[0-9]*' "$summary" | grep -qv '"collisions": *0$'; then fail "$what: a robot collided"; fi
-}
+# check_summary SUMMARY WHAT MIN_OBSERVABLE
+source "$here/summary_checks.sh"
 
 if [ "$case" = baselines ]; then
   [ -n "$experiment" ] || fail "no hexplore_experiment given"
   "$experiment" --config "$work/team.yaml" --seeds 1 --planners mdvrp+,mromt+,tspga+ --jobs 2 \
     --results "$work/compare" > "$work/compare.log" 2>&1 || { tail -n 30 "$work/compare.log"; fail "the comparison failed"; }
-  for planner in mdvrp+ mromt+ tspga+; do check_summary "$work/compare/$planner/seed-1/summary.json" "$planner"; done
+  for planner in mdvrp+ mromt+ tspga+; do
+    check_summary "$work/compare/$planner/seed-1/summary.json" "$planner" "$min_observable"
+  done
   [ -s "$work/compare/comparison.md" ] || fail "no comparison report"
   rows=$(tail -n +2 "$work/compare/comparison.csv" | cut -d, -f1 | tr '\n' ' ')
   [ "$rows" = "mdvrp+ mromt+ tspga+ " ] || fail "comparison.csv rows are '$rows'"
@@ -119,16 +111,8 @@ esac
 
 wait "$launcher" || true
 trap - EXIT
-summary=$work/results/summary.json
-[ -f "$summary" ] || fail "no $summary"
-cat "$summary"
-value() { sed -n "s/.*\"$1\": *\([^,}]*\).*/\1/p" "$summary" | head -n 1 | tr -d '"'; }
-end=$(value end_reason)
-obs=$(value final_observable_completeness)
-echo "end: $end, observable completeness: $obs (required >= $min_observable)"
-[ "$end" = "no task views remain" ] || fail "mission ended by '$end', not by exhausted task views"
-awk -v c="$obs" -v m="$min_observable" 'BEGIN { exit !(c >= m) }' || fail "observable completeness $obs < $min_observable"
-if grep -o '"collisions": *[0-9]*' "$summary" | grep -qv '"collisions": *0$'; then fail "a robot collided"; fi
+cat "$work/results/summary.json"
+check_summary "$work/results/summary.json" "$case" "$min_observable"
 case $case in
   switch)
     grep -q "planner switched from hexplore to no-mnss" "$work/logs/slugcat1-planning.log" ||

@@ -18,15 +18,5 @@ fail() {
 
 "$experiment" --config "$team" --seeds "$seed" --results "$work/results" --report false > "$work/experiment.log" 2>&1 ||
   fail "hexplore_experiment exited with $?"
-summary="$work/results/seed-$seed/summary.json"
-[ -f "$summary" ] || fail "no $summary"
-value() { sed -n "s/.*\"$1\": *\"\{0,1\}\([^\",}]*\).*/\1/p" "$summary" | head -n 1; }
-end=$(value end_reason)
-time_s=$(value exploration_time_s)
-observable=$(value final_observable_completeness)
-collisions=$(grep -o '"collisions": *[0-9]*' "$summary" | awk -F: '{s += $2} END {print s + 0}')
-echo "end: '$end' at ${time_s} s sim, observable completeness ${observable}, collisions ${collisions}"
-[ "$end" = "no task views remain" ] || fail "mission ended by '$end', not by exhausted task views"
-awk -v o="$observable" -v m="$min_observable" 'BEGIN { exit !(o >= m) }' ||
-  fail "observable completeness $observable below $min_observable"
-[ "$collisions" = 0 ] || fail "$collisions collisions"
+source "$(dirname "$0")/summary_checks.sh"
+check_summary "$work/results/seed-$seed/summary.json" mission "$min_observable"
