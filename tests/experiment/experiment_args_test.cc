@@ -91,5 +91,18 @@ TEST(ExperimentArgs, HelpAsksForTheUsageAndNeedsNothingElse) {
   EXPECT_FALSE(parse({"--config", "t.yaml", "--seeds", "1"}).help);
 }
 
+TEST(ExperimentArgs, TimeLimitOverridesTheTeamFilesAndRejectsNonsense) {
+  EXPECT_FALSE(parse({"--config", "t.yaml", "--seeds", "1"}).time_limit_s.has_value());
+  EXPECT_EQ(parse({"--config", "t.yaml", "--seeds", "1", "--time-limit-s", "5400"}).time_limit_s, 5400.0);
+  for (const char* bad : {"0", "-5", "nan", "inf", "10s", "", "2e6"}) {
+    try {
+      parse({"--config", "t.yaml", "--seeds", "1", "--time-limit-s", bad});
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("--time-limit-s"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hexplore::experiment

@@ -1,6 +1,7 @@
 #include "tools/experiment/experiment_args.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace hexplore::experiment {
@@ -84,6 +85,18 @@ ExperimentArgs parse_experiment_args(int argc, char** argv) {
       if (used != value.size() || jobs < 1 || jobs > 64)
         throw std::invalid_argument("--jobs expects a whole number from 1 to 64, got '" + value + "'");
       a.jobs = jobs;
+    } else if (flag == "--time-limit-s") {
+      size_t used = 0;
+      double limit = 0.0;
+      try {
+        limit = std::stod(value, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != value.size() || !std::isfinite(limit) || limit <= 0.0 || limit > 1.0e6)
+        throw std::invalid_argument("--time-limit-s expects seconds of sim time, above 0 and at most 1e6, got '" +
+                                    value + "'");
+      a.time_limit_s = limit;
     } else if (flag == "--report") {
       if (value != "true" && value != "false") throw std::invalid_argument("--report expects true or false, got '" + value + "'");
       a.report = value == "true";

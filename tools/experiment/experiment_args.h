@@ -17,6 +17,9 @@ struct ExperimentArgs {
   // --planners a,b,c: the comparison, each planner's seeds in results_dir/<planner>/, then the
   // report (results_dir/comparison.*); excludes --planner.
   std::vector<std::string> planners;
+  // --time-limit-s S: replaces the team file's time_limit_s, e.g. to run the default team to its
+  // end (the team file's limit bounds the main job) without editing the file.
+  std::optional<double> time_limit_s;
   int jobs = 1;                        // --jobs N: up to N planners' runs at once, as child processes
   bool report = true;                  // --report false: no figures, no comparison report
   std::optional<std::string> report_script;  // --report-script PATH (default: the source tree's)

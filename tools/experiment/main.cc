@@ -1,7 +1,7 @@
 // hexplore_experiment: one mission per seed in the reproducible fast mode (every service of
 // the team in this process, in lockstep on sim time), then the mean and spread of the results.
 //   hexplore_experiment --config TEAM.yaml --seeds 1,2,3|1-5 [--results DIR] [--planner NAME]
-//                       [--robot ID ...] [--log-level L] [--<service option> <value> ...]
+//                       [--time-limit-s S] [--robot ID ...] [--log-level L] [--<service option> <value> ...]
 // Each seed writes DIR/seed-<n>/ (the station's results folder); DIR/summary.json holds the
 // summary. The seed draws LiDAR noise, the GA's random choices and, for the built-in procedural
 // scenes, the scene's details.
@@ -100,6 +100,7 @@ int run_seeds(const core::TeamConfig& base, const ExperimentArgs& args, const st
     core::TeamConfig team = base;
     team.params.seed = args.seeds[i];
     if (planner) team.params.planner = *planner;
+    if (args.time_limit_s) team.time_limit_s = *args.time_limit_s;
     const std::string dir = (std::filesystem::path(results_dir) / ("seed-" + std::to_string(team.params.seed))).string();
     std::printf("[experiment] run %zu/%zu: seed %llu -> %s\n", i + 1, args.seeds.size(),
                 static_cast<unsigned long long>(team.params.seed), dir.c_str());
@@ -159,6 +160,7 @@ pid_t spawn_planner(const ExperimentArgs& args, const std::string& planner, cons
   std::string seeds;
   for (uint64_t s : args.seeds) seeds += (seeds.empty() ? "" : ",") + std::to_string(s);
   argv.insert(argv.end(), {"--seeds", seeds, "--report", args.report ? "true" : "false"});
+  if (args.time_limit_s) argv.insert(argv.end(), {"--time-limit-s", std::to_string(*args.time_limit_s)});
   for (const auto& r : args.robots) argv.insert(argv.end(), {"--robot", r});
   for (const auto& [k, v] : args.service_arguments) argv.insert(argv.end(), {"--" + k, v});
   std::filesystem::create_directories(dir);
@@ -248,7 +250,7 @@ int run(int argc, char** argv) {
   constexpr const char* kUsage =
       "usage: hexplore_experiment --config TEAM.yaml --seeds 1,2,3|1-5 [--results DIR] "
       "[--planner NAME | --planners A,B,C [--jobs N] [--report true|false] [--report-script PATH]] "
-      "[--robot ID ...] [--log-level L] [--<service option> <value> ...]\n";
+      "[--time-limit-s S] [--robot ID ...] [--log-level L] [--<service option> <value> ...]\n";
   ExperimentArgs args;
   core::TeamConfig base;
   try {
