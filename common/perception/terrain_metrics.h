@@ -30,8 +30,10 @@ Eigen::Vector3d voxel_mean(const VoxelData& d, const Eigen::Vector3d& centre);
 // Gaussian of its 3x3x3 neighbourhood. The normal is the eigenvector of the smallest eigenvalue,
 // oriented (when the voxel had none, or when `orient_to_sensor` and the plane is shallow or
 // `sensor` within gamma_th of it) towards `sensor`, or up when the plane is shallower than s_th
-// and the sensor above it; else kept on the side of the previous normal. A neighbourhood with too few points, or points on a line only,
-// leaves the previous normal.
+// and the sensor above it; a new steep plane seen at a grazing angle faces the side `sensor`
+// sees of the voxel's own points when they are planar. Otherwise the normal keeps the side of
+// the previous one. A neighbourhood with too few points, or points on a line only, leaves the
+// previous normal.
 void update_geometry(const octomap::OcTreeKey& key, VoxelData& d, NeighbourLookup& lookup,
                      const Eigen::Vector3d& centre, const Eigen::Vector3d& sensor, bool orient_to_sensor,
                      const MapParams& params);
