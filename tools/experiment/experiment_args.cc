@@ -2,11 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace hexplore::experiment {
 
 namespace {
+
+// `value` read by `read` (a std::stoi or std::stod call) when all of it is the number, else nullopt.
+template <typename Read>
+auto read_whole(const std::string& value, Read read) -> std::optional<decltype(read(value, nullptr))> {
+  size_t used = 0;
+  try {
+    const auto v = read(value, &used);
+    if (used == value.size()) return v;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
 
 uint64_t to_seed(const std::string& text) {
   size_t used = 0;
@@ -75,28 +88,16 @@ ExperimentArgs parse_experiment_args(int argc, char** argv) {
     else if (flag == "--planner") a.planner = value;
     else if (flag == "--planners") a.planners = parse_planner_list(value);
     else if (flag == "--jobs") {
-      size_t used = 0;
-      int jobs = 0;
-      try {
-        jobs = std::stoi(value, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != value.size() || jobs < 1 || jobs > 64)
+      const auto jobs = read_whole(value, [](const std::string& s, size_t* used) { return std::stoi(s, used); });
+      if (!jobs || *jobs < 1 || *jobs > 64)
         throw std::invalid_argument("--jobs expects a whole number from 1 to 64, got '" + value + "'");
-      a.jobs = jobs;
+      a.jobs = *jobs;
     } else if (flag == "--time-limit-s") {
-      size_t used = 0;
-      double limit = 0.0;
-      try {
-        limit = std::stod(value, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != value.size() || !std::isfinite(limit) || limit <= 0.0 || limit > 1.0e6)
+      const auto limit = read_whole(value, [](const std::string& s, size_t* used) { return std::stod(s, used); });
+      if (!limit || !std::isfinite(*limit) || *limit <= 0.0 || *limit > 1.0e6)
         throw std::invalid_argument("--time-limit-s expects seconds of sim time, above 0 and at most 1e6, got '" +
                                     value + "'");
-      a.time_limit_s = limit;
+      a.time_limit_s = *limit;
     } else if (flag == "--report") {
       if (value != "true" && value != "false") throw std::invalid_argument("--report expects true or false, got '" + value + "'");
       a.report = value == "true";
