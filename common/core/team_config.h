@@ -127,6 +127,11 @@ struct AlgorithmParams {
   // passes gamma_th on its own normal, and voxel normals scatter around the supervoxel's. Each
   // target's own task view keeps the paper's limits.
   double shared_view_angle_margin_deg = 0.0;
+  // Where a facade target's task view is chosen: "weakest_species" (the best view within the
+  // shortest species range that sees the target, so the target stays public when the weaker
+  // species can take it) or "best_score" (the best view within the team's longest range, the
+  // paper read literally; planning::PlannerOptions::weakest_species_views).
+  std::string task_view_choice = "weakest_species";
   double beta_i = 0.5;
   double beta_l = 0.5;
   double beta_zeta = 10.0;

@@ -55,6 +55,10 @@ struct PlannerOptions {
   // (core::AlgorithmParams::shared_view_angle_margin_deg).
   double shared_view_margin_deg = 0.0;
   double beta_i = 0.5, beta_l = 0.5;            // Vis weights
+  // A facade target's task view is the best within the shortest species range that sees it
+  // (core::AlgorithmParams::task_view_choice "weakest_species"); false: the best within the
+  // team's longest range ("best_score").
+  bool weakest_species_views = true;
   double beta_zeta = 10.0, beta_varsigma = 1.0; // capability score a(k)
   double beta_e = 0.5, beta_c = 1.0, beta_m = 1.5, beta_d = 3.0;
   int reference_window = 2;     // core::AlgorithmParams::reference_window

@@ -173,6 +173,7 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
       const double w = inst.problem.travel_cost(k, prev, c);
       plan.route_length_m += w * inst.speed[size_t(k)];
       plan.cost_s += w + inst.problem.execution_cost(k, c);
+      if (cl.label != kPublic) plan.private_cost_s += w + inst.problem.execution_cost(k, c);
       prev = c;
       if (const auto it = ref_owner.find(cl.id); it != ref_owner.end()) {
         ++compared;

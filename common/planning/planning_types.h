@@ -38,6 +38,7 @@ struct RobotPlan {
   std::vector<Eigen::Vector3d> cluster_centers;
   double route_length_m = 0.0;  // graph length from the robot through its clusters
   double cost_s = 0.0;          // cost(V_r) of the paper (transition + execution time)
+  double private_cost_s = 0.0;  // the part of cost_s spent on clusters only this robot's species may take
   std::vector<TaskView> route;  // exploration route (only filled for the planning robot)
 };
 

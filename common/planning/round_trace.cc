@@ -39,6 +39,8 @@ std::string round_trace_json(const RoundTrace& round, const PlanRequest& req, co
   for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cluster_ids.size();
   j << "], \"cost_s_per_robot\": [";
   for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cost_s;
+  j << "], \"private_cost_s_per_robot\": [";
+  for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].private_cost_s;
   j << "], \"own_clusters\": [";
   for (size_t i = 0; i < mine.cluster_centers.size(); ++i) j << (i ? ", " : "") << vec(mine.cluster_centers[i]);
   j << "], \"route\": [";

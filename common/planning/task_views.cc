@@ -37,6 +37,25 @@ bool some_species_can_take(const MapContext& ctx, const TeamCapabilities& team, 
   return false;
 }
 
+// The observation ranges a facade target's task view is searched within, in turn. The paper
+// labels a view by the weakest species that can take it "so strong robots are not
+// overloaded", but picks the view by visibility score alone, and Vis = 1 / (beta_i Inc +
+// beta_l |m|) prefers a frontal view from 12 m to a 30 deg view from 4 m: a low target the
+// SLUGCAT sees well from its 10 m became the MR1000's alone, whose private work then set the
+// length of the whole mission (common/planning/README.md, "Whose work a view is"). So the
+// best view within the shortest species range comes first, and a longer range is searched
+// only for targets that range does not see.
+std::vector<double> view_range_tiers(const TeamCapabilities& team, const PlannerOptions& o) {
+  std::vector<double> tiers;
+  if (o.weakest_species_views)
+    for (const auto& s : team.species)
+      if (s.observation_range_m > 0.0) tiers.push_back(s.observation_range_m);
+  tiers.push_back(team.max_observation_range());
+  std::sort(tiers.begin(), tiers.end());
+  tiers.erase(std::unique(tiers.begin(), tiers.end()), tiers.end());
+  return tiers;
+}
+
 }  // namespace
 
 bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target,
@@ -102,7 +121,9 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
   ViewGenerationStats local;
   ViewGenerationStats& st = stats ? *stats : local;
   st = {};
-  const double range = team.max_observation_range();
+  // Where the task view of a facade target is searched for: within the whole team's reach,
+  // or (PlannerOptions::weakest_species_views) within the shortest range that sees it first.
+  const std::vector<double> range_tiers = view_range_tiers(team, o);
   std::vector<TaskView> views;
   std::unordered_set<uint64_t> covered_ground;
   auto record = [&](uint64_t key, TargetOutcome outcome) {
@@ -130,13 +151,16 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     // within r scores at least what any view beyond r could, it is the best within range.
     TaskView view;
     bool found = false, sighted = false;
-    for (double r = 4.0;; r = std::min(range, 2.0 * r)) {
-      found = best_facade_view(ctx, sv, ctx.ground.within(sv.center, r, /*sorted=*/false), std::min(r, range), o, view,
-                               &st.rays_cast, &sighted, &team);
-      if (r >= range) break;
-      const double beyond = r - o.sensor_height_m;
-      // (A spot the target was observed from in vain is only a fallback: look farther first.)
-      if (found && beyond > 0 && view.score >= 1.0 / (o.beta_l * beyond) && !ctx.tried_from(sv.key, view.position)) break;
+    for (double tier : range_tiers) {
+      for (double r = std::min(4.0, tier);; r = std::min(tier, 2.0 * r)) {
+        found = best_facade_view(ctx, sv, ctx.ground.within(sv.center, r, /*sorted=*/false), r, o, view,
+                                 &st.rays_cast, &sighted, &team);
+        if (r >= tier) break;
+        const double beyond = r - o.sensor_height_m;
+        // (A spot the target was observed from in vain is only a fallback: look farther first.)
+        if (found && beyond > 0 && view.score >= 1.0 / (o.beta_l * beyond) && !ctx.tried_from(sv.key, view.position)) break;
+      }
+      if (found) break;
     }
     if (!found) {
       ++st.unobservable_facades;

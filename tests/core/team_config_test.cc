@@ -79,6 +79,14 @@ TEST(TeamConfig, NanIsRejected) {
                "species[0].speed_mps", "finite");
 }
 
+TEST(TeamConfig, TaskViewChoiceIsReadAndChecked) {
+  EXPECT_EQ(parse_team_config(kMinimal, "t").params.task_view_choice, "weakest_species");
+  EXPECT_EQ(parse_team_config(std::string(kMinimal) + "params: {task_view_choice: best_score}\n", "t").params.task_view_choice,
+            "best_score");
+  expect_error(std::string(kMinimal) + "params: {task_view_choice: nearest}\n", "params.task_view_choice",
+               "must be weakest_species or best_score, got 'nearest'");
+}
+
 TEST(TeamConfig, DuplicateRobotIsRejected) {
   expect_error("species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}, {id: a, species: SLUGCAT}]\n",
                "robots[1].id", "duplicate robot id");

@@ -146,6 +146,46 @@ TEST(TaskViews, ATargetObservedInVainFromASpotIsNextViewedFromAnother) {
   EXPECT_EQ(views[0].ground_key, far.key);
 }
 
+// A wall patch seen frontally from 13 m (only the MR1000's 27 m reaches) and obliquely from
+// 3.7 m (the SLUGCAT's 10 m does): Vis prefers the far frontal spot, which would make the
+// target the MR1000's alone; the task view is the best the weakest species can take, so the
+// target stays public (PlannerOptions::weakest_species_views). "best_score" keeps Vis alone.
+TEST(TaskViews, ATargetTheWeakerSpeciesCanSeeStaysPublic) {
+  highlevel::MapUpdate up;
+  up.full_snapshot = true;
+  auto add = [&](Eigen::Vector3d c, highlevel::SurfaceClass s, Eigen::Vector3d n) {
+    highlevel::Supervoxel sv;
+    sv.center = c;
+    sv.normal = n;
+    sv.surface = s;
+    sv.covered = s == highlevel::SurfaceClass::kGround;
+    sv.traversal_requirement = sv.covered ? 1 : 0;
+    sv.key = highlevel::supervoxel_key(core::cell_of(c, 1.0), s);
+    up.upserts.push_back(sv);
+    return sv;
+  };
+  const auto far = add({-5.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
+  const auto near = add({4.5, 2.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
+  add({7.5, 0.5, 1.5}, highlevel::SurfaceClass::kFacade, -Eigen::Vector3d::UnitX());
+  highlevel::HighLevelMap map({2, 1});
+  map.apply(up);
+  Fixture f;
+  const MapContext ctx(map, f.options);
+  ASSERT_TRUE(f.options.weakest_species_views) << "the default";
+  auto views = generate_task_views(ctx, f.caps, f.options);
+  ASSERT_EQ(views.size(), 1u);
+  EXPECT_EQ(views[0].ground_key, near.key);
+  EXPECT_EQ(views[0].label, kPublic);
+
+  core::TeamConfig literal = four_robot_team();
+  literal.params.task_view_choice = "best_score";
+  const PlannerOptions best_score = PlannerOptions::from(literal.params);
+  views = generate_task_views(ctx, f.caps, best_score);
+  ASSERT_EQ(views.size(), 1u);
+  EXPECT_EQ(views[0].ground_key, far.key);
+  EXPECT_EQ(views[0].label, 1) << "the MR1000's alone";
+}
+
 // Facade normals face the side their sensors saw (one facing per supervoxel): a view behind
 // the surface would see its back, so it is no view.
 TEST(TaskViews, AViewStandsInFrontOfTheSurface) {

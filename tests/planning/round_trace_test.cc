@@ -22,6 +22,8 @@ TEST(RoundTrace, OneLineWithTheRouteTheReferenceAndWhereTheFollowerHeads) {
   v.facade = true;
   v.targets = {7, 8};
   res.robots[0].route = {v};
+  res.robots[0].cost_s = 40.0;
+  res.robots[0].private_cost_s = 25.0;
   FollowerCounters f;
   f.legs_kept = 4;
   f.stretch_views_kept = 3;
@@ -45,6 +47,7 @@ TEST(RoundTrace, OneLineWithTheRouteTheReferenceAndWhereTheFollowerHeads) {
   EXPECT_EQ(line.find('\n'), line.size() - 1);  // one line
   EXPECT_NE(line.find("\"t\": 12.5"), std::string::npos);
   EXPECT_NE(line.find("\"reference\": \"mr1000a\""), std::string::npos);
+  EXPECT_NE(line.find("\"cost_s_per_robot\": [40], \"private_cost_s_per_robot\": [25]"), std::string::npos) << line;
   EXPECT_NE(line.find("\"route\": [{\"p\": [1.00, 2.00, 0.00], \"facade\": 1, \"targets\": 2}]"), std::string::npos);
   EXPECT_NE(line.find("\"legs_kept\": 4, \"legs_switched\": 0, \"stretch_views_kept\": 3"), std::string::npos);
   EXPECT_NE(line.find("\"next\": [[3.00, 4.00, 0.00], [5.00, 6.00, 0.00]]}"), std::string::npos) << line;
