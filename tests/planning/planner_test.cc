@@ -104,20 +104,25 @@ TEST(TaskViews, WallsOccludeTheirBackSide) {
 // A target that stayed incomplete when observed from its best view gets its next view from
 // another spot; with no other spot that sees it, the same spot serves again (the ledger's
 // attempts give it up, and every robot's ledger learns of that).
+// Adds one supervoxel to a snapshot: ground is covered and traversable by every species, a
+// facade an open target.
+highlevel::Supervoxel add_supervoxel(highlevel::MapUpdate& up, const Eigen::Vector3d& c, highlevel::SurfaceClass s,
+                                     const Eigen::Vector3d& n) {
+  highlevel::Supervoxel sv;
+  sv.center = c;
+  sv.normal = n;
+  sv.surface = s;
+  sv.covered = s == highlevel::SurfaceClass::kGround;
+  sv.traversal_requirement = sv.covered ? 1 : 0;
+  sv.key = highlevel::supervoxel_key(core::cell_of(c, 1.0), s);
+  up.upserts.push_back(sv);
+  return sv;
+}
+
 TEST(TaskViews, ATargetObservedInVainFromASpotIsNextViewedFromAnother) {
   highlevel::MapUpdate up;
   up.full_snapshot = true;
-  auto add = [&](Eigen::Vector3d c, highlevel::SurfaceClass s, Eigen::Vector3d n) {
-    highlevel::Supervoxel sv;
-    sv.center = c;
-    sv.normal = n;
-    sv.surface = s;
-    sv.covered = s == highlevel::SurfaceClass::kGround;
-    sv.traversal_requirement = sv.covered ? 1 : 0;
-    sv.key = highlevel::supervoxel_key(core::cell_of(c, 1.0), s);
-    up.upserts.push_back(sv);
-    return sv;
-  };
+  auto add = [&](Eigen::Vector3d c, highlevel::SurfaceClass s, Eigen::Vector3d n) { return add_supervoxel(up, c, s, n); };
   const auto far = add({1.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
   const auto near = add({4.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
   const auto target = add({7.5, 0.5, 1.5}, highlevel::SurfaceClass::kFacade, -Eigen::Vector3d::UnitX());
@@ -153,17 +158,7 @@ TEST(TaskViews, ATargetObservedInVainFromASpotIsNextViewedFromAnother) {
 TEST(TaskViews, ATargetTheWeakerSpeciesCanSeeStaysPublic) {
   highlevel::MapUpdate up;
   up.full_snapshot = true;
-  auto add = [&](Eigen::Vector3d c, highlevel::SurfaceClass s, Eigen::Vector3d n) {
-    highlevel::Supervoxel sv;
-    sv.center = c;
-    sv.normal = n;
-    sv.surface = s;
-    sv.covered = s == highlevel::SurfaceClass::kGround;
-    sv.traversal_requirement = sv.covered ? 1 : 0;
-    sv.key = highlevel::supervoxel_key(core::cell_of(c, 1.0), s);
-    up.upserts.push_back(sv);
-    return sv;
-  };
+  auto add = [&](Eigen::Vector3d c, highlevel::SurfaceClass s, Eigen::Vector3d n) { return add_supervoxel(up, c, s, n); };
   const auto far = add({-5.5, 0.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
   const auto near = add({4.5, 2.5, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
   add({7.5, 0.5, 1.5}, highlevel::SurfaceClass::kFacade, -Eigen::Vector3d::UnitX());
