@@ -38,8 +38,8 @@ bool some_species_can_take(const MapContext& ctx, const TeamCapabilities& team, 
 }
 
 // The observation ranges a facade target's task view is searched within, in turn. The paper
-// labels a view by the weakest species that can take it "so strong robots are not
-// overloaded", but picks the view by visibility score alone, and Vis = 1 / (beta_i Inc +
+// labels a view by the weakest species that can take it, "to prevent overloading
+// high-capability robots", but picks the view by visibility score alone, and Vis = 1 / (beta_i Inc +
 // beta_l |m|) prefers a frontal view from 12 m to a 30 deg view from 4 m: a low target the
 // SLUGCAT sees well from its 10 m became the MR1000's alone, whose private work then set the
 // length of the whole mission (common/planning/README.md, "Whose work a view is"). So the
