@@ -181,9 +181,6 @@ void validate(const TeamConfig& c) {
   require(p.shared_view_angle_margin_deg >= 0.0 && p.shared_view_angle_margin_deg < p.gamma_th_deg &&
               2.0 * p.shared_view_angle_margin_deg < p.theta_u_deg - p.theta_l_deg,
           c, "params.shared_view_angle_margin_deg", "must be >= 0 and leave room inside gamma_th_deg and [theta_l_deg, theta_u_deg]");
-  require(p.preferred_view_angle_margin_deg >= 0.0 && p.preferred_view_angle_margin_deg < p.gamma_th_deg &&
-              2.0 * p.preferred_view_angle_margin_deg < p.theta_u_deg - p.theta_l_deg,
-          c, "params.preferred_view_angle_margin_deg", "must be >= 0 and leave room inside gamma_th_deg and [theta_l_deg, theta_u_deg]");
   require(p.ga_population >= 2, c, "params.ga_population", "must be >= 2");
   require(c.time_limit_s > 0, c, "time_limit_s", "must be > 0");
 }

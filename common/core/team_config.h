@@ -127,12 +127,6 @@ struct AlgorithmParams {
   // passes gamma_th on its own normal, and voxel normals scatter around the supervoxel's. Each
   // target's own task view keeps the paper's limits.
   double shared_view_angle_margin_deg = 0.0;
-  // A facade target's own task view is searched first among spots that see it this far inside
-  // the angle limits, then among the rest (not in the paper). The MR1000's looks from the
-  // paper's best-Vis view completed 17-22 % of their targets in the default missions; the open
-  // ones were seen at a median incidence of 36-41 deg, the complete ones at 24-33 deg
-  // (common/planning/README.md, "Looks that complete"). 0 = the paper's choice.
-  double preferred_view_angle_margin_deg = 0.0;
   // Where a facade target's task view is chosen: "weakest_species" (the best view within the
   // shortest species range that sees the target, so the target stays public when the weaker
   // species can take it) or "best_score" (the best view within the team's longest range, the

@@ -195,7 +195,7 @@ void read_liveness(const Reader& r, const YAML::Node& n, LivenessParams& l) {
 
 void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   const std::string path = "params";
-  r.only_keys(n, path, {"map_resolution_m", "rho_th", "rho_measure", "min_ise_patch_voxels", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg", "shared_view_angle_margin_deg", "preferred_view_angle_margin_deg",
+  r.only_keys(n, path, {"map_resolution_m", "rho_th", "rho_measure", "min_ise_patch_voxels", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg", "shared_view_angle_margin_deg",
                         "task_view_choice", "beta_i", "beta_l", "beta_zeta", "beta_varsigma", "beta_e", "beta_c", "beta_m", "beta_d",
                         "reference_window", "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "liveness", "ga_population",
                         "ga_max_generations", "ga_time_budget_s", "planner", "seed"});
@@ -216,7 +216,6 @@ void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   r.read(n, path, "theta_l_deg", p.theta_l_deg);
   r.read(n, path, "theta_u_deg", p.theta_u_deg);
   r.read(n, path, "shared_view_angle_margin_deg", p.shared_view_angle_margin_deg);
-  r.read(n, path, "preferred_view_angle_margin_deg", p.preferred_view_angle_margin_deg);
   r.read(n, path, "task_view_choice", p.task_view_choice);
   if (p.task_view_choice != "weakest_species" && p.task_view_choice != "best_score")
     r.fail(n["task_view_choice"], path + ".task_view_choice",

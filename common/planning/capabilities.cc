@@ -49,7 +49,6 @@ PlannerOptions PlannerOptions::from(const core::AlgorithmParams& p) {
   o.theta_l_deg = p.theta_l_deg;
   o.theta_u_deg = p.theta_u_deg;
   o.shared_view_margin_deg = p.shared_view_angle_margin_deg;
-  o.preferred_view_margin_deg = p.preferred_view_angle_margin_deg;
   o.weakest_species_views = p.task_view_choice == "weakest_species";
   o.beta_i = p.beta_i;
   o.beta_l = p.beta_l;

@@ -54,9 +54,6 @@ struct PlannerOptions {
   // Kept inside both angle limits where a spot stands in for other targets' views
   // (core::AlgorithmParams::shared_view_angle_margin_deg).
   double shared_view_margin_deg = 0.0;
-  // A target's own view is searched first among spots this far inside both angle limits
-  // (core::AlgorithmParams::preferred_view_angle_margin_deg; 0: best Vis only).
-  double preferred_view_margin_deg = 0.0;
   double beta_i = 0.5, beta_l = 0.5;            // Vis weights
   // A facade target's task view is the best within the shortest species range that sees it
   // (core::AlgorithmParams::task_view_choice "weakest_species"); false: the best within the

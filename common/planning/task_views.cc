@@ -67,7 +67,6 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
     const highlevel::Supervoxel* ground;
     ViewGeometry geometry;
     bool tried;  // the target stayed open when observed from here: taken only when no other spot sees it
-    bool marginal;  // within the angle limits, but not PlannerOptions::preferred_view_margin_deg inside them
   };
   std::vector<Scored> ok;
   ok.reserve(candidates.size());
@@ -88,16 +87,12 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
     const Eigen::Vector3d sensor = g->center + gn * o.sensor_height_m;
     const ViewGeometry geo = view_geometry(sensor, g->normal, target.center, target.normal);
     if (!angles_ok(geo, o)) continue;
-    const bool marginal = o.preferred_view_margin_deg > 0.0 && !angles_ok(geo, o, o.preferred_view_margin_deg);
-    ok.push_back({visibility_score(geo, o), g, geo, ctx.tried_from(target.key, g->center), marginal});
+    ok.push_back({visibility_score(geo, o), g, geo, ctx.tried_from(target.key, g->center)});
   }
   if (sighted && !ok.empty()) *sighted = true;
   // Ray casts are the expensive part: try candidates best-first and stop at the first clear one.
-  // Spots tried before come last; then those seeing the target near an angle limit, where
-  // the voxels of the target off its mean normal fail.
   std::sort(ok.begin(), ok.end(), [](const Scored& a, const Scored& b) {
     if (a.tried != b.tried) return b.tried;
-    if (a.marginal != b.marginal) return b.marginal;
     return a.score != b.score ? a.score > b.score : a.ground->key < b.ground->key;
   });
   for (const auto& s : ok) {

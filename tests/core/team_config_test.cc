@@ -87,15 +87,6 @@ TEST(TeamConfig, TaskViewChoiceIsReadAndChecked) {
                "must be weakest_species or best_score, got 'nearest'");
 }
 
-TEST(TeamConfig, PreferredViewMarginIsReadAndChecked) {
-  EXPECT_EQ(parse_team_config(kMinimal, "t").params.preferred_view_angle_margin_deg, 0.0);
-  EXPECT_EQ(parse_team_config(std::string(kMinimal) + "params: {preferred_view_angle_margin_deg: 15}\n", "t")
-                .params.preferred_view_angle_margin_deg,
-            15.0);
-  expect_error(std::string(kMinimal) + "params: {preferred_view_angle_margin_deg: 50}\n",
-               "params.preferred_view_angle_margin_deg", "must be >= 0 and leave room inside gamma_th_deg");
-}
-
 TEST(TeamConfig, DuplicateRobotIsRejected) {
   expect_error("species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}, {id: a, species: SLUGCAT}]\n",
                "robots[1].id", "duplicate robot id");

@@ -181,33 +181,6 @@ TEST(TaskViews, ATargetTheWeakerSpeciesCanSeeStaysPublic) {
   EXPECT_EQ(views[0].label, 1) << "the MR1000's alone";
 }
 
-// A wall patch seen at 31 deg from 2.3 m and at 26 deg from 9.4 m (both within the SLUGCAT's
-// 10 m): Vis prefers the near spot, whose incidence with the target's extent (37 deg) leaves
-// little room for the voxels off its mean normal; with a preferred margin of 15 deg the spot
-// inside 30 deg comes first (PlannerOptions::preferred_view_margin_deg).
-TEST(TaskViews, APreferredMarginPutsSpotsWellInsideTheAngleLimitsFirst) {
-  highlevel::MapUpdate up;
-  up.full_snapshot = true;
-  auto add = [&](Eigen::Vector3d c, highlevel::SurfaceClass s, Eigen::Vector3d n) { return add_supervoxel(up, c, s, n); };
-  const auto near = add({5.5, 1.7, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
-  const auto far = add({-1.0, 4.6, 0.1}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
-  add({7.5, 0.5, 0.6}, highlevel::SurfaceClass::kFacade, -Eigen::Vector3d::UnitX());
-  highlevel::HighLevelMap map({2, 1});
-  map.apply(up);
-  Fixture f;
-  const MapContext ctx(map, f.options);
-  ASSERT_EQ(f.options.preferred_view_margin_deg, 0.0) << "the default: best Vis";
-  auto views = generate_task_views(ctx, f.caps, f.options);
-  ASSERT_EQ(views.size(), 1u);
-  EXPECT_EQ(views[0].ground_key, near.key);
-
-  PlannerOptions margin = f.options;
-  margin.preferred_view_margin_deg = 15.0;
-  views = generate_task_views(ctx, f.caps, margin);
-  ASSERT_EQ(views.size(), 1u);
-  EXPECT_EQ(views[0].ground_key, far.key);
-}
-
 // Facade normals face the side their sensors saw (one facing per supervoxel): a view behind
 // the surface would see its back, so it is no view.
 TEST(TaskViews, AViewStandsInFrontOfTheSurface) {
