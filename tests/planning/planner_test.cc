@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -68,20 +69,27 @@ TEST(TaskViews, FacadeViewsAreVisibleAndRespectRequirements) {
   EXPECT_TRUE(std::is_sorted(views.begin(), views.end(), [](auto& a, auto& b) { return a.key < b.key; }));
 }
 
+// Adds one supervoxel to a snapshot: ground is traversable by every species; by default ground
+// is covered and a facade an open target.
+highlevel::Supervoxel add_supervoxel(highlevel::MapUpdate& up, const Eigen::Vector3d& c, highlevel::SurfaceClass s,
+                                     const Eigen::Vector3d& n, std::optional<bool> covered = std::nullopt) {
+  highlevel::Supervoxel sv;
+  sv.center = c;
+  sv.normal = n;
+  sv.surface = s;
+  sv.covered = covered.value_or(s == highlevel::SurfaceClass::kGround);
+  sv.traversal_requirement = s == highlevel::SurfaceClass::kGround ? 1 : 0;
+  sv.key = highlevel::supervoxel_key(core::cell_of(c, 1.0), s);
+  up.upserts.push_back(sv);
+  return sv;
+}
+
 TEST(TaskViews, WallsOccludeTheirBackSide) {
   // A facade target behind a thick wall, seen from one side only.
   highlevel::MapUpdate up;
   up.full_snapshot = true;
   auto add = [&](Eigen::Vector3d c, highlevel::SurfaceClass s, Eigen::Vector3d n, bool covered) {
-    highlevel::Supervoxel sv;
-    sv.center = c;
-    sv.normal = n;
-    sv.surface = s;
-    sv.covered = covered;
-    sv.traversal_requirement = s == highlevel::SurfaceClass::kGround ? 1 : 0;
-    sv.key = highlevel::supervoxel_key(core::cell_of(c, 1.0), s);
-    up.upserts.push_back(sv);
-    return sv.key;
+    return add_supervoxel(up, c, s, n, covered).key;
   };
   // The target faces west: the far west ground is behind the occluder, the near west ground
   // (between the occluder and the target) sees it, the east ground sees its back.
@@ -104,21 +112,6 @@ TEST(TaskViews, WallsOccludeTheirBackSide) {
 // A target that stayed incomplete when observed from its best view gets its next view from
 // another spot; with no other spot that sees it, the same spot serves again (the ledger's
 // attempts give it up, and every robot's ledger learns of that).
-// Adds one supervoxel to a snapshot: ground is covered and traversable by every species, a
-// facade an open target.
-highlevel::Supervoxel add_supervoxel(highlevel::MapUpdate& up, const Eigen::Vector3d& c, highlevel::SurfaceClass s,
-                                     const Eigen::Vector3d& n) {
-  highlevel::Supervoxel sv;
-  sv.center = c;
-  sv.normal = n;
-  sv.surface = s;
-  sv.covered = s == highlevel::SurfaceClass::kGround;
-  sv.traversal_requirement = sv.covered ? 1 : 0;
-  sv.key = highlevel::supervoxel_key(core::cell_of(c, 1.0), s);
-  up.upserts.push_back(sv);
-  return sv;
-}
-
 TEST(TaskViews, ATargetObservedInVainFromASpotIsNextViewedFromAnother) {
   highlevel::MapUpdate up;
   up.full_snapshot = true;
