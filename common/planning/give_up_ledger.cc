@@ -21,20 +21,30 @@ bool GiveUpLedger::failed(uint64_t key, int voxels) {
 bool GiveUpLedger::decide(uint64_t key, const Record& r, int voxels) {
   if (int(r.spots.size()) < rules_.views && r.attempts < rules_.attempts) return false;
   if (given_up(key, voxels)) return false;  // already
-  given_up_[key] = voxels;
+  set_given_up(key, voxels);
   records_.erase(key);  // if it comes back, it gets a fresh set of tries
   return true;
 }
 
 void GiveUpLedger::merge(uint64_t key, int voxels) {
-  auto [it, fresh] = given_up_.emplace(key, voxels);
-  if (!fresh) it->second = std::max(it->second, voxels);
+  const auto it = given_up_.find(key);
+  if (it == given_up_.end() || voxels > it->second.voxels) set_given_up(key, voxels);
+}
+
+void GiveUpLedger::set_given_up(uint64_t key, int voxels) { given_up_[key] = GivenUp{voxels, ++revision_}; }
+
+std::vector<std::pair<uint64_t, int>> GiveUpLedger::given_up_since(uint64_t revision) const {
+  std::vector<std::pair<uint64_t, int>> out;
+  for (const auto& [key, entry] : given_up_)
+    if (entry.revision > revision) out.emplace_back(key, entry.voxels);
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 bool GiveUpLedger::given_up(uint64_t key, int current_voxels) const {
   const auto it = given_up_.find(key);
   if (it == given_up_.end()) return false;
-  return current_voxels <= std::ceil(rules_.regrowth_ratio * std::max(1, it->second));
+  return current_voxels <= std::ceil(rules_.regrowth_ratio * std::max(1, it->second.voxels));
 }
 
 bool GiveUpLedger::tried_from(uint64_t key, const Eigen::Vector3d& spot) const {

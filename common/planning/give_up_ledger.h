@@ -11,10 +11,13 @@
 // common/planning/README.md, "A mission that ends"). A given-up target comes back when its
 // supervoxel has grown markedly since (new voxels: the neighbourhood changed, e.g. a door
 // opened onto it), so giving up is never final.
-// Given-up targets travel with the team solution, so every planner agrees on what is left.
+// Given-up targets travel with the team solution, so every planner agrees on what is left;
+// the ledger numbers its changes (revision) so that a message can carry only what changed
+// since an earlier one (GiveUpSharing).
 
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -42,8 +45,14 @@ class GiveUpLedger {
 
   // Whether the team no longer makes views for the target, given its current voxel count.
   bool given_up(uint64_t key, int current_voxels) const;
-  // key -> voxel count when given up (what the team solution shares), in no order.
-  const std::unordered_map<uint64_t, int>& given_up_targets() const { return given_up_; }
+  size_t given_up_count() const { return given_up_.size(); }
+  // Each change to the given-up set (a target given up here or by a teammate, or its voxel
+  // count raised) takes the next revision; a merge that changes nothing takes none, so what a
+  // teammate sends is not echoed back.
+  uint64_t revision() const { return revision_; }
+  // (key, voxel count when given up) of the targets changed after `revision`, by key;
+  // given_up_since(0) is the whole set.
+  std::vector<std::pair<uint64_t, int>> given_up_since(uint64_t revision) const;
   // Whether the target stayed incomplete after an observation from within `distinct_m` of
   // `spot`. A second look from there sees what the first saw (the data of the default team:
   // 97 % of such repeats left the target open), so the next view of it stands elsewhere.
@@ -60,10 +69,16 @@ class GiveUpLedger {
   };
   bool decide(uint64_t key, const Record& r, int voxels);
   bool near_a_spot(const Record& r, const Eigen::Vector3d& spot) const;  // within distinct_m of one of its spots
+  void set_given_up(uint64_t key, int voxels);
 
+  struct GivenUp {
+    int voxels = 0;         // the target's voxel count when given up
+    uint64_t revision = 0;  // when this entry last changed
+  };
   GiveUpRules rules_;
   std::unordered_map<uint64_t, Record> records_;
-  std::unordered_map<uint64_t, int> given_up_;
+  std::unordered_map<uint64_t, GivenUp> given_up_;
+  uint64_t revision_ = 0;
 };
 
 }  // namespace hexplore::planning

@@ -353,7 +353,7 @@ void PlanningService::replan(const std::string& reason) {
   core::LogLine(core::LogLevel::kDebug, "planning")
       << robot_id_ << ": round " << round_ << " (" << reason << ", " << active_name_ << "): " << res.views << " views, "
       << res.clusters << " clusters (" << res.dropped_clusters << " dropped), " << res.open_views << " open, "
-      << route.size() << " route views, " << req.robots.size() << " live, " << ledger_.given_up_targets().size()
+      << route.size() << " route views, " << req.robots.size() << " live, " << ledger_.given_up_count()
       << " given up, "
       << res.view_stats.outside_region << " outside, " << res.view_stats.unreachable_ground << " unreachable ground, "
       << res.times.total_s * 1e3 << " ms";
@@ -368,11 +368,10 @@ void PlanningService::replan(const std::string& reason) {
   auto& pub = context_->publisher();
   v1::TeamSolution solution = planning::to_proto(res);
   // Planners that share no route (MROMT+, TSPGA+) send the solution without its sequences:
-  // the given-up set below still travels, so every robot agrees on what is left.
+  // the given-up targets below still travel, so every robot agrees on what is left (what
+  // changed lately, and now and then the whole set: planning::GiveUpSharing).
   if (!active_->shares_route()) solution.clear_sequences();
-  std::vector<std::pair<uint64_t, int>> given_up(ledger_.given_up_targets().begin(), ledger_.given_up_targets().end());
-  std::sort(given_up.begin(), given_up.end());
-  for (const auto& [key, voxels] : given_up) {
+  for (const auto& [key, voxels] : give_up_sharing_.next(ledger_)) {
     solution.add_given_up_supervoxels(key);
     solution.add_given_up_voxel_counts(uint32_t(std::max(0, voxels)));
   }
@@ -394,7 +393,7 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
   round.planner = active_name_;
   round.position = positions_.at(robot_id_);
   round.odometry_m = odometry_m_;
-  round.given_up = ledger_.given_up_targets().size();
+  round.given_up = ledger_.given_up_count();
   round.passing_observations = uint64_t(passing_->observations());
   const auto ahead = follower_->views_ahead();
   for (const auto& v : ahead.first(std::min<size_t>(3, ahead.size()))) round.follower_next.push_back(v.position);

@@ -28,6 +28,7 @@
 #include "common/core/liveness.h"
 #include "common/highlevel/high_level_map.h"
 #include "common/planning/give_up_ledger.h"
+#include "common/planning/give_up_sharing.h"
 #include "common/planning/passing_observer.h"
 #include "common/planning/planner_registry.h"
 #include "common/planning/route_follower.h"
@@ -100,6 +101,7 @@ class PlanningService : public service::Service {
   std::map<std::string, Eigen::Vector3d> peer_anchor_;  // robot id -> where it last moved 0.5 m from
   std::map<std::string, int64_t> peer_moved_ns_;      // robot id -> now_ns() when it got there
   planning::GiveUpLedger ledger_;                     // targets given up by us and the team
+  planning::GiveUpSharing give_up_sharing_;           // which of them the next team solution carries
   std::unique_ptr<planning::RouteFollower> follower_;  // executes our route
   std::unique_ptr<planning::PassingObserver> passing_;  // what we see on the way counts too
   double last_look_s_ = -1.0;

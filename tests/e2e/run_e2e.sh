@@ -60,9 +60,16 @@ source "$here/summary_checks.sh"
 if [ "$case" = baselines ]; then
   [ -n "$experiment" ] || fail "no hexplore_experiment given"
   "$experiment" --config "$work/team.yaml" --seeds 1 --planners mdvrp+,mromt+,tspga+ --jobs 2 \
-    --results "$work/compare" > "$work/compare.log" 2>&1 || { tail -n 30 "$work/compare.log"; fail "the comparison failed"; }
+    --results "$work/compare" --trace-dir "$work/traces" > "$work/compare.log" 2>&1 \
+    || { tail -n 30 "$work/compare.log"; fail "the comparison failed"; }
   for planner in mdvrp+ mromt+ tspga+; do
     check_summary "$work/compare/$planner/seed-1/summary.json" "$planner" "$min_observable"
+    # Each planner's rounds in its own trace folder (side by side they once shared one).
+    for trace in "$work/traces/$planner/seed-1/planning-slugcat1.jsonl" "$work/traces/$planner/seed-1/planning-mr1000a.jsonl"; do
+      [ -s "$trace" ] || fail "no planning trace $trace"
+      others=$(grep -vc "\"planner\": \"$planner\"" "$trace" || true)
+      [ "$others" = 0 ] || fail "$trace holds $others rounds of another planner (or broken lines)"
+    done
   done
   [ -s "$work/compare/comparison.md" ] || fail "no comparison report"
   rows=$(tail -n +2 "$work/compare/comparison.csv" | cut -d, -f1 | tr '\n' ' ')

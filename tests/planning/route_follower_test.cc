@@ -1,5 +1,5 @@
 // The route follower without sockets: driving, dwelling at facade views, judging coverage a
-// settle time later, skipping when blocked; and the give-up ledger's rules.
+// settle time later, skipping when blocked.
 #include "common/planning/route_follower.h"
 
 #include <gtest/gtest.h>
@@ -563,50 +563,6 @@ TEST(RouteFollower, AViewBehindAWallIsNotPartOfTheStretch) {
   f.set_route({north, beyond, a}, {2.0, 1.5, 0}, map);
   EXPECT_EQ(ground_keys(f.route()), ground_keys({a, north, beyond}));
   EXPECT_EQ(f.counters().stretch_views_kept, 0);
-}
-
-TEST(GiveUpLedger, ByDefaultGivesUpAfterOneLookOrThreeTries) {
-  GiveUpLedger l;
-  EXPECT_TRUE(l.observed(1, {0, 0, 0}, 30));  // stayed incomplete after a look
-  EXPECT_TRUE(l.given_up(1, 30));
-  EXPECT_FALSE(l.failed(2, 10));  // blocked on the way: no look
-  EXPECT_FALSE(l.failed(2, 10));
-  EXPECT_TRUE(l.failed(2, 10));  // three tries of any kind
-}
-
-TEST(GiveUpLedger, WithTwoViewsGivesUpAfterTwoDistinctSpotsOrThreeTries) {
-  GiveUpLedger l{GiveUpRules{.views = 2}};
-  EXPECT_FALSE(l.observed(1, {0, 0, 0}, 30));
-  EXPECT_FALSE(l.observed(1, {0.5, 0, 0}, 30));  // the same spot, again
-  EXPECT_FALSE(l.given_up(1, 30));
-  EXPECT_TRUE(l.observed(1, {3, 0, 0}, 30));  // a second, distinct spot
-  EXPECT_TRUE(l.given_up(1, 30));
-
-  EXPECT_FALSE(l.failed(2, 10));
-  EXPECT_FALSE(l.observed(2, {0, 0, 0}, 10));
-  EXPECT_TRUE(l.failed(2, 10));  // three tries of any kind
-}
-
-TEST(GiveUpLedger, ATargetIsTriedFromTheSpotsItStayedOpenFromAndTheirSurroundings) {
-  GiveUpLedger l{GiveUpRules{.views = 2}};
-  EXPECT_FALSE(l.tried_from(1, {0, 0, 0}));
-  l.observed(1, {0, 0, 0.4}, 30);
-  EXPECT_TRUE(l.tried_from(1, {1.0, 0, 0}));   // ground 1 m from where the robot stood
-  EXPECT_FALSE(l.tried_from(1, {2.0, 0, 0}));  // a distinct spot
-  EXPECT_FALSE(l.tried_from(2, {0, 0, 0}));
-  l.failed(3, 10);  // a try that observed nothing marks no spot
-  EXPECT_FALSE(l.tried_from(3, {0, 0, 0}));
-}
-
-TEST(GiveUpLedger, AGrownTargetComesBack) {
-  GiveUpLedger l;
-  l.merge(5, 40);  // a teammate gave it up at 40 voxels
-  EXPECT_TRUE(l.given_up(5, 40));
-  EXPECT_TRUE(l.given_up(5, 50));
-  EXPECT_FALSE(l.given_up(5, 51));  // grown by more than a quarter: worth a look again
-  l.merge(5, 30);                    // a smaller count does not lower the bar
-  EXPECT_FALSE(l.given_up(5, 51));
-  EXPECT_TRUE(l.given_up(5, 49));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 // summary. The seed draws LiDAR noise, the GA's random choices and, for the built-in procedural
 // scenes, the scene's details.
 // The comparison: --planners a,b,c runs every planner's seeds into DIR/<planner>/ (as above;
+// --trace-dir T: traces into T/<planner>/seed-<n>;
 // --jobs N runs up to N planners at once, each as a child process logging to
 // DIR/<planner>/experiment.log), then tools/report/compare_report.py writes DIR/comparison.*
 // and DIR/figures/ (--report-script PATH names another script). Every seeds folder gets its
@@ -178,6 +179,15 @@ pid_t spawn_planner(const ExperimentArgs& args, const std::string& planner, cons
 }
 
 
+// One planner's arguments in a comparison: its planning traces under TRACE_DIR/<planner>/, as
+// its results are under DIR/<planner>/ (planners run side by side would write the same files).
+ExperimentArgs for_planner(const ExperimentArgs& args, const std::string& planner) {
+  ExperimentArgs out = args;
+  if (auto it = out.service_arguments.find("trace-dir"); it != out.service_arguments.end())
+    it->second = (std::filesystem::path(it->second) / planner).string();
+  return out;
+}
+
 // --planners: each planner's seeds into results_dir/<planner>/, then the report.
 int run_comparison(const core::TeamConfig& base, const ExperimentArgs& args, const sigset_t& stop_signals) {
   namespace fs = std::filesystem;
@@ -187,7 +197,8 @@ int run_comparison(const core::TeamConfig& base, const ExperimentArgs& args, con
   if (args.jobs <= 1) {
     for (const auto& planner : args.planners) {
       std::printf("[experiment] planner %s\n", planner.c_str());
-      const int code = run_seeds(base, args, (fs::path(args.results_dir) / planner).string(), planner, stop_signals);
+      const int code = run_seeds(base, for_planner(args, planner), (fs::path(args.results_dir) / planner).string(), planner,
+                                 stop_signals);
       if (code == 2) return 2;
       exit_code = std::max(exit_code, code);
     }
@@ -200,7 +211,7 @@ int run_comparison(const core::TeamConfig& base, const ExperimentArgs& args, con
       while (!interrupted && next < args.planners.size() && int(running.size()) < args.jobs) {
         const std::string& planner = args.planners[next++];
         const std::string dir = (fs::path(args.results_dir) / planner).string();
-        const pid_t pid = spawn_planner(args, planner, dir);
+        const pid_t pid = spawn_planner(for_planner(args, planner), planner, dir);
         if (pid < 0) {
           std::printf("[experiment] could not start the runs of %s\n", planner.c_str());
           exit_code = 1;

@@ -1,0 +1,19 @@
+#include "common/planning/give_up_sharing.h"
+
+#include <algorithm>
+
+namespace hexplore::planning {
+
+GiveUpSharing::GiveUpSharing(int window, int full_every)
+    : window_(std::max(1, window)), full_every_(std::max(1, full_every)) {}
+
+std::vector<std::pair<uint64_t, int>> GiveUpSharing::next(const GiveUpLedger& ledger) {
+  const bool whole = messages_ % uint64_t(full_every_) == 0 || int(sent_at_.size()) < window_;
+  const uint64_t since = whole ? 0 : sent_at_.front();
+  ++messages_;
+  sent_at_.push_back(ledger.revision());
+  if (int(sent_at_.size()) > window_) sent_at_.pop_front();
+  return ledger.given_up_since(since);
+}
+
+}  // namespace hexplore::planning
