@@ -112,7 +112,9 @@ v1::TeamSolution solution(int clusters_per_robot, int given_up) {
     seq->set_robot_id(id);
     for (int i = 0; i < clusters_per_robot; ++i) {
       seq->add_cluster_ids(core::seed_key({5 + 2 * i, 10 + (i * 3) % 7, 0}));
-      set(seq->add_cluster_centers_m(), 5.5 + 2 * i + 0.37, 10.5 + (i * 3) % 7 - 0.21, 0.4);
+      // A cluster's centre is the mean of its views, up to eta_r = 5 m from its seed cell.
+      set(seq->add_cluster_centers_m(), 5.5 + 2 * i + 0.83 * ((i * 7) % 9 - 4), 10.5 + (i * 3) % 7 + 0.9 * ((i * 5) % 7 - 3),
+          0.4);
     }
     seq->set_route_length_m(41.7);
   }
@@ -168,6 +170,9 @@ void print_team_message_bytes() {
   row("team/map, 12 supervoxels", bytes(topics::kTeamMap, increment(12), options));
   row("team/map, 60 supervoxels", bytes(topics::kTeamMap, increment(60), options));
   row("team/plan, 2 x 12 clusters, 40 given up", bytes(topics::kTeamPlan, solution(12, 40), options));
+  // What a team solution usually carries of the given-up set: the changes of its last few
+  // messages (planning::GiveUpSharing), not the whole set.
+  row("team/plan, 2 x 12 clusters, 3 given-up changes", bytes(topics::kTeamPlan, solution(12, 3), options));
   std::fflush(stdout);
 }
 

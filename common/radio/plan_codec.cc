@@ -30,12 +30,13 @@ void PlanCodec::encode(const google::protobuf::MessageLite& message, const trans
     w.varint(static_cast<uint64_t>(seq.cluster_centers_m_size()));
     core::GridCell previous;
     for (uint64_t id : seq.cluster_ids()) write_key(w, id, previous);
-    // Each centre from its cluster id's seed cell (a centre without an id: from the origin).
+    // Each centre in decimetres from its cluster id's seed cell (a centre without an id: from
+    // the origin): within 6.3 m of it, a byte per axis.
     for (int i = 0; i < seq.cluster_centers_m_size(); ++i) {
       const Eigen::Vector3d origin = i < seq.cluster_ids_size()
                                          ? core::cell_center(highlevel::seed_cell_of(seq.cluster_ids(i)), eta_s_m_)
                                          : Eigen::Vector3d::Zero();
-      write_cm(w, vec(seq.cluster_centers_m(i)), origin);
+      write_fixed(w, vec(seq.cluster_centers_m(i)), origin, kDmPerM);
     }
     w.varint(static_cast<uint64_t>(std::max<int64_t>(0, to_cm(seq.route_length_m()))));
   }
@@ -72,7 +73,7 @@ bool PlanCodec::decode(std::string_view data, const transport::Roster* roster,
       const Eigen::Vector3d origin =
           k < ids ? core::cell_center(highlevel::seed_cell_of(seq->cluster_ids(static_cast<int>(k))), eta_s_m_)
                   : Eigen::Vector3d::Zero();
-      set(seq->add_cluster_centers_m(), read_cm(r, origin));
+      set(seq->add_cluster_centers_m(), read_fixed(r, origin, kDmPerM));
     }
     seq->set_route_length_m(from_cm(static_cast<int64_t>(r.bounded(uint64_t{1} << 40))));
   }

@@ -1,7 +1,9 @@
 #pragma once
 // Fixed-point units of the team messages on the radio. Positions travel in centimetres (robot
-// bodies are tens of centimetres; safety margins are 10 cm), speeds in centimetres per second,
-// angles in 256ths of a turn. Every value is clamped to what its field can hold.
+// bodies are tens of centimetres; safety margins are 10 cm), the centres of a team solution's
+// task clusters in decimetres (they only measure how far a new route strays from the
+// reference, in metres), speeds in centimetres per second, angles in 256ths of a turn. Every
+// value is clamped to what its field can hold.
 
 #include <algorithm>
 #include <cmath>
@@ -16,21 +18,34 @@
 namespace hexplore::radio {
 
 inline constexpr double kCmPerM = 100.0;
+inline constexpr double kDmPerM = 10.0;
 
-inline int64_t to_cm(double metres) {
+// Metres as a whole number of 1/steps_per_m steps (0 for NaN and infinities, clamped to 10,000 km).
+inline int64_t to_steps(double metres, double steps_per_m) {
   if (!std::isfinite(metres)) return 0;
-  return static_cast<int64_t>(std::llround(std::clamp(metres, -1e7, 1e7) * kCmPerM));
+  return static_cast<int64_t>(std::llround(std::clamp(metres, -1e7, 1e7) * steps_per_m));
 }
+inline int64_t to_cm(double metres) { return to_steps(metres, kCmPerM); }
 inline double from_cm(int64_t cm) { return static_cast<double>(cm) / kCmPerM; }
 
-// A point as three zigzag varints of centimetres relative to `origin` (delta coding).
+// A point as three zigzag varints of 1/steps_per_m metres relative to `origin` (delta coding).
+inline void write_fixed(transport::ByteWriter& w, const Eigen::Vector3d& p, const Eigen::Vector3d& origin,
+                        double steps_per_m) {
+  for (int a = 0; a < 3; ++a) w.svarint(to_steps(p[a], steps_per_m) - to_steps(origin[a], steps_per_m));
+}
+inline Eigen::Vector3d read_fixed(transport::ByteReader& r, const Eigen::Vector3d& origin, double steps_per_m) {
+  Eigen::Vector3d p;
+  // Summed as doubles: a malformed step near the int64 limit must not overflow.
+  for (int a = 0; a < 3; ++a)
+    p[a] = (static_cast<double>(r.svarint()) + static_cast<double>(to_steps(origin[a], steps_per_m))) / steps_per_m;
+  return p;
+}
+// ... in centimetres (waypoints, supervoxel centres).
 inline void write_cm(transport::ByteWriter& w, const Eigen::Vector3d& p, const Eigen::Vector3d& origin) {
-  for (int a = 0; a < 3; ++a) w.svarint(to_cm(p[a]) - to_cm(origin[a]));
+  write_fixed(w, p, origin, kCmPerM);
 }
 inline Eigen::Vector3d read_cm(transport::ByteReader& r, const Eigen::Vector3d& origin) {
-  Eigen::Vector3d p;
-  for (int a = 0; a < 3; ++a) p[a] = from_cm(r.svarint() + to_cm(origin[a]));
-  return p;
+  return read_fixed(r, origin, kCmPerM);
 }
 
 // An angle in radians as a byte: 256 steps per turn (1.4 degrees).
