@@ -8,7 +8,8 @@ GiveUpSharing::GiveUpSharing(int window, int full_every)
     : window_(std::max(1, window)), full_every_(std::max(1, full_every)) {}
 
 std::vector<std::pair<uint64_t, int>> GiveUpSharing::next(const GiveUpLedger& ledger) {
-  const bool whole = messages_ % uint64_t(full_every_) == 0 || int(sent_at_.size()) < window_;
+  const bool whole = whole_next_ || messages_ % uint64_t(full_every_) == 0 || int(sent_at_.size()) < window_;
+  whole_next_ = false;
   const uint64_t since = whole ? 0 : sent_at_.front();
   ++messages_;
   sent_at_.push_back(ledger.revision());

@@ -7,8 +7,9 @@
 //
 // A message carries what changed in the ledger since the message `window` messages before it,
 // so a change travels in `window` consecutive messages (a teammate misses it only when all of
-// them are lost: 10^-3 at 10 % loss with three), and every `full_every`-th message carries the
-// whole set, for a teammate that joined late, restarted, or was out of range meanwhile.
+// them are lost: 10^-3 at 10 % loss with three). The whole set goes when the owner asks for it
+// (whole_set_next: a teammate came back from a silence, or its planner restarted) and every
+// `full_every`-th message, for what loss took all the same.
 // Changes that arrived from a teammate are passed on like one's own: with a radio range
 // shorter than the site, that is how they reach robots the source cannot.
 
@@ -23,15 +24,18 @@ namespace hexplore::planning {
 
 class GiveUpSharing {
  public:
-  explicit GiveUpSharing(int window = 3, int full_every = 50);
+  explicit GiveUpSharing(int window = 3, int full_every = 100);
 
   // The (key, voxel count) entries of the next message, by key; call once per message sent.
   std::vector<std::pair<uint64_t, int>> next(const GiveUpLedger& ledger);
+  // The next message carries the whole set.
+  void whole_set_next() { whole_next_ = true; }
 
  private:
   int window_;
   int full_every_;
   uint64_t messages_ = 0;
+  bool whole_next_ = false;
   std::deque<uint64_t> sent_at_;  // the ledger's revision at each of the last `window` messages
 };
 

@@ -125,6 +125,8 @@ void PlanningService::setup(service::ServiceContext& context) {
     const std::string& id = r.header.robot_id();
     if (!context_->team().find_robot(id)) return;
     positions_[id] = position_of(r.message);
+    // Back after a silence (out of range, a partition): it missed the given-up changes meanwhile.
+    if (id != robot_id_ && !teammates_.alive(id, context_->now_ns())) give_up_sharing_.whole_set_next();
     teammates_.heard(id, context_->now_ns());
     if (id == robot_id_) return;
     // A teammate that stops moving and goes idle has finished its route.
@@ -147,6 +149,10 @@ void PlanningService::setup(service::ServiceContext& context) {
     // makes robots replan each other in a loop and never finish a route (paper: replan on
     // route time-out or when a robot finishes its route).
     // A solution without sequences (its planner shares no route) is no reference.
+    // A round number that went back: its planner restarted and knows nothing the team gave up.
+    if (const auto it = shared_rounds_.find(source); it != shared_rounds_.end() && r.message.round() < it->second)
+      give_up_sharing_.whole_set_next();
+    shared_rounds_[source] = r.message.round();
     if (r.message.sequences_size() > 0) shared_[source] = planning::reference_from_proto(r.message, source);
     const auto& keys = r.message.given_up_supervoxels();
     const auto& counts = r.message.given_up_voxel_counts();

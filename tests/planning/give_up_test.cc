@@ -91,6 +91,18 @@ TEST(GiveUpSharing, AChangeTravelsInWindowMessagesAndTheWholeSetNowAndThen) {
   EXPECT_EQ(share.next(l), (Entries{}));
 }
 
+TEST(GiveUpSharing, OnRequestTheNextMessageCarriesTheWholeSetOnce) {
+  GiveUpLedger l;
+  GiveUpSharing share(/*window=*/1, /*full_every=*/1000);
+  l.merge(1, 10);
+  l.merge(2, 10);
+  share.next(l);
+  EXPECT_EQ(share.next(l), (Entries{}));
+  share.whole_set_next();  // a teammate came back from a silence
+  EXPECT_EQ(share.next(l), (Entries{{1, 10}, {2, 10}}));
+  EXPECT_EQ(share.next(l), (Entries{}));
+}
+
 TEST(GiveUpSharing, TeammatesThatHearEveryMessageEndWithTheSameSetAndStopSending) {
   // Three robots, each giving up its own targets and merging what the others send: the sets
   // agree, and once nothing changes the messages carry nothing but the periodic whole set.

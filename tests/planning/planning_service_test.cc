@@ -231,6 +231,39 @@ TEST_F(SilentTeammateTest, PathsKeepOffASilentTeammate) {
     EXPECT_GE((Eigen::Vector3d(p.x(), p.y(), 0) - at).norm(), reach - 1e-6) << p.x() << ", " << p.y();
 }
 
+// Given-up targets travel incrementally (planning::GiveUpSharing): what a teammate gave up is
+// passed on in our next messages and then no more, until that teammate's planner restarts (its
+// round numbers start again) and needs the whole set.
+class GivenUpSharingTest : public PlanningServiceTest {
+ protected:
+  GivenUpSharingTest() { team_yaml_ = std::string(kTeam) + "  eta_t_s: 0.5\n"; }
+};
+
+TEST_F(GivenUpSharingTest, ATeammatesGiveUpsArePassedOnAndGoWholeToARestartedPlanner) {
+  const auto& team = host_->team();
+  transport::Publisher peer_planning(host_->transport(), transport::Identity{"r2", "", "planning"},
+                                     core::bind_endpoint(team, "r2", ServiceKind::kPlanning, SocketRole::kPublish));
+  ASSERT_TRUE(until([] {}, [&] { return plan_.has_value(); }));
+  constexpr uint64_t kGivenUp = 0x0123456789ull;
+  const auto carries = [&] {
+    return plan_ && std::count(plan_->given_up_supervoxels().begin(), plan_->given_up_supervoxels().end(), kGivenUp) > 0;
+  };
+  v1::TeamSolution theirs;
+  theirs.set_round(40);
+  theirs.set_planner("hexplore");
+  theirs.add_given_up_supervoxels(kGivenUp);
+  theirs.add_given_up_voxel_counts(12);
+  ASSERT_TRUE(until([&] { peer_planning.publish(topics::kTeamPlan, theirs); }, carries)) << "never passed on";
+  // Later messages carry only what changed lately: the target leaves them.
+  theirs.clear_given_up_supervoxels();
+  theirs.clear_given_up_voxel_counts();
+  ASSERT_TRUE(until([] {}, [&] { return plan_ && !carries(); })) << "the whole set in every message";
+  // The teammate's planner restarts: round 1 after round 40.
+  theirs.set_round(1);
+  ASSERT_TRUE(until([&] { peer_planning.publish(topics::kTeamPlan, theirs); }, carries))
+      << "a restarted teammate did not get the whole set";
+}
+
 // A bad option stops the service before it starts, with an error naming the flag (the process
 // then exits with 2 and says which flag and why).
 TEST(PlanningServiceOptions, ABadOptionIsAnErrorNamingTheFlag) {
