@@ -22,8 +22,8 @@ void write_key(transport::ByteWriter& w, uint64_t key, core::GridCell& previous)
 bool read_key(transport::ByteReader& r, uint64_t& key, core::GridCell& previous) {
   const uint64_t first = r.varint();
   const int64_t x = previous.x + transport::unzigzag(first >> kClassBits);
-  const int64_t y = previous.y + r.svarint();
-  const int64_t z = previous.z + r.svarint();
+  const int64_t y = previous.y + r.bounded_svarint(2 * kCellLimit);
+  const int64_t z = previous.z + r.bounded_svarint(2 * kCellLimit);
   if (r.failed()) return false;
   for (int64_t v : {x, y, z})
     if (v < -kCellLimit || v >= kCellLimit) return r.fail(), false;

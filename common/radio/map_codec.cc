@@ -12,6 +12,11 @@
 namespace hexplore::radio {
 namespace {
 
+// A centre is sent as its offset from where its key predicts it; an offset of more than 2^40
+// quanta (17 million km) is malformed.
+constexpr int64_t kMaxCentreStep = int64_t{1} << 40;
+
+
 using google::protobuf::RepeatedPtrField;
 using transport::ByteReader;
 using transport::ByteWriter;
@@ -100,9 +105,9 @@ bool decode_fields(ByteReader& r, double eta_s_m, MapFields m) {
   for (auto& s : *m.supervoxels) {
     if (s.removed()) continue;
     const Eigen::Vector3d p = predicted_centre(s.key(), eta_s_m);
-    s.set_center_x(static_cast<float>(highlevel::centre_from_steps(highlevel::centre_steps(p.x()) + r.svarint())));
-    s.set_center_y(static_cast<float>(highlevel::centre_from_steps(highlevel::centre_steps(p.y()) + r.svarint())));
-    s.set_center_z(static_cast<float>(highlevel::centre_from_steps(highlevel::centre_steps(p.z()) + r.svarint())));
+    s.set_center_x(static_cast<float>(highlevel::centre_from_steps(highlevel::centre_steps(p.x()) + r.bounded_svarint(kMaxCentreStep))));
+    s.set_center_y(static_cast<float>(highlevel::centre_from_steps(highlevel::centre_steps(p.y()) + r.bounded_svarint(kMaxCentreStep))));
+    s.set_center_z(static_cast<float>(highlevel::centre_from_steps(highlevel::centre_steps(p.z()) + r.bounded_svarint(kMaxCentreStep))));
   }
   for (auto& s : *m.supervoxels) {
     if (s.removed()) continue;

@@ -80,6 +80,13 @@ class ByteReader {
     return fail();  // more than ten bytes: not a varint
   }
   int64_t svarint() { return unzigzag(varint()); }
+  // A signed varint of at most `max_abs` either way (a step added to a known value: larger ones
+  // are malformed, and would overflow the sum); larger values fail the reader.
+  int64_t bounded_svarint(int64_t max_abs) {
+    const int64_t v = svarint();
+    if (v > max_abs || v < -max_abs) return fail();
+    return v;
+  }
   // A varint that must fit `max` (counts, indices); larger values fail the reader.
   uint64_t bounded(uint64_t max) {
     const uint64_t v = varint();

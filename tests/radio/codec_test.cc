@@ -9,6 +9,7 @@
 
 #include "common/highlevel/supervoxel.h"
 #include "common/radio/fragment_codec.h"
+#include "common/radio/key_steps.h"
 #include "common/radio/plan_codec.h"
 #include "common/radio/pose_codec.h"
 #include "common/radio/team_codecs.h"
@@ -53,6 +54,23 @@ double yaw_of(const v1::RobotPose& p) {
   const auto& o = p.pose().orientation();
   const Eigen::Matrix3d m = Eigen::Quaterniond(o.w(), o.x(), o.y(), o.z()).toRotationMatrix();
   return std::atan2(m(1, 0), m(0, 0));
+}
+
+// A key step is added to the previous cell: a step near the int64 limit is malformed input,
+// refused before the sum (which would overflow).
+TEST(KeySteps, AStepBeyondTheKeyRangeIsRefusedNotSummed) {
+  for (const int64_t step : {INT64_MAX, INT64_MIN + 1, int64_t{1} << 40}) {
+    std::string bytes;
+    transport::ByteWriter w(bytes);
+    w.varint(0);       // no x step, class 0
+    w.svarint(step);   // y
+    w.svarint(0);      // z
+    transport::ByteReader r(bytes);
+    core::GridCell previous{5, 5, 0};
+    uint64_t key = 0;
+    EXPECT_FALSE(read_key(r, key, previous)) << step;
+    EXPECT_TRUE(r.failed());
+  }
 }
 
 TEST(PoseCodec, CarriesPositionHeadingVelocityAndStateInAFewBytes) {
