@@ -16,7 +16,6 @@ namespace {
 // quanta (17 million km) is malformed.
 constexpr int64_t kMaxCentreStep = int64_t{1} << 40;
 
-
 using google::protobuf::RepeatedPtrField;
 using transport::ByteReader;
 using transport::ByteWriter;

@@ -35,9 +35,10 @@ inline void write_fixed(transport::ByteWriter& w, const Eigen::Vector3d& p, cons
 }
 inline Eigen::Vector3d read_fixed(transport::ByteReader& r, const Eigen::Vector3d& origin, double steps_per_m) {
   Eigen::Vector3d p;
-  // Summed as doubles: a malformed step near the int64 limit must not overflow.
+  // A step beyond twice the clamp of to_steps is malformed (and could overflow the sum).
+  const auto max_step = static_cast<int64_t>(2e7 * steps_per_m);
   for (int a = 0; a < 3; ++a)
-    p[a] = (static_cast<double>(r.svarint()) + static_cast<double>(to_steps(origin[a], steps_per_m))) / steps_per_m;
+    p[a] = static_cast<double>(r.bounded_svarint(max_step) + to_steps(origin[a], steps_per_m)) / steps_per_m;
   return p;
 }
 // ... in centimetres (waypoints, supervoxel centres).
