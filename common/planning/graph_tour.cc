@@ -8,21 +8,26 @@
 namespace hexplore::planning {
 
 GraphTour graph_tour(const highlevel::TopologyGraph& graph, uint64_t start, const std::vector<uint64_t>& stops,
-                     int species) {
+                     int species, std::optional<uint64_t> end) {
   GraphTour out;
   const int n = int(stops.size());
   if (n == 0) return out;
-  // Node 0 is the start, node i + 1 stop i; one Dijkstra per distinct vertex.
-  std::vector<uint64_t> key(size_t(n) + 1);
+  // Node 0 is the start, node i + 1 stop i, node n + 1 the end (if any); one Dijkstra per
+  // distinct vertex a leg leaves from (the end is only arrived at).
+  const int nodes = n + 2;
+  const int end_node = n + 1;
+  std::vector<uint64_t> key(static_cast<size_t>(nodes), 0);
   key[0] = start;
   for (int i = 0; i < n; ++i) key[size_t(i) + 1] = stops[size_t(i)];
-  std::map<uint64_t, std::vector<int>> nodes_at;
-  for (int i = 0; i <= n; ++i) nodes_at[key[size_t(i)]].push_back(i);
+  if (end) key[size_t(end_node)] = *end;
+  std::map<uint64_t, std::vector<int>> sources, targets;
+  for (int i = 0; i <= n; ++i) sources[key[size_t(i)]].push_back(i);
+  for (int i = 1; i <= n + (end ? 1 : 0); ++i) targets[key[size_t(i)]].push_back(i);
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<std::vector<double>> d(size_t(n) + 1, std::vector<double>(size_t(n) + 1, inf));
-  for (const auto& [source, rows] : nodes_at) {
+  std::vector<std::vector<double>> d(size_t(nodes), std::vector<double>(size_t(nodes), inf));
+  for (const auto& [source, rows] : sources) {
     const auto dist = graph.distances_from(source, species);
-    for (const auto& [target, columns] : nodes_at) {
+    for (const auto& [target, columns] : targets) {
       const auto it = dist.find(target);
       if (it == dist.end()) continue;
       for (int a : rows)
@@ -30,6 +35,8 @@ GraphTour graph_tour(const highlevel::TopologyGraph& graph, uint64_t start, cons
     }
   }
 
+  // An end the start cannot reach (another part of the graph) is left out.
+  const bool use_end = end && std::isfinite(d[0][size_t(end_node)]);
   std::vector<int> reachable, cut_off;
   for (int i = 1; i <= n; ++i) (std::isfinite(d[0][size_t(i)]) ? reachable : cut_off).push_back(i);
   // Nearest neighbour (ties: the earlier stop).
@@ -51,6 +58,7 @@ GraphTour graph_tour(const highlevel::TopologyGraph& graph, uint64_t start, cons
       len += d[size_t(prev)][size_t(i)];
       prev = i;
     }
+    if (use_end && std::isfinite(d[size_t(prev)][size_t(end_node)])) len += d[size_t(prev)][size_t(end_node)];
     return len;
   };
   // 2-opt and or-opt (1-3 stops, either direction) on the open path, first improvement.
@@ -86,6 +94,18 @@ GraphTour graph_tour(const highlevel::TopologyGraph& graph, uint64_t start, cons
   for (int i : cut_off) out.order.push_back(i - 1);
   out.length_m = cut_off.empty() ? best_len : inf;
   return out;
+}
+
+std::vector<TaskView> order_views_on_graph(const highlevel::TopologyGraph& graph, uint64_t start,
+                                           const std::vector<TaskView>& views, int species, std::optional<uint64_t> end) {
+  if (views.size() <= 1) return views;
+  std::vector<uint64_t> stops;
+  stops.reserve(views.size());
+  for (const auto& v : views) stops.push_back(v.ground_key);
+  std::vector<TaskView> ordered;
+  ordered.reserve(views.size());
+  for (int i : graph_tour(graph, start, stops, species, end).order) ordered.push_back(views[size_t(i)]);
+  return ordered;
 }
 
 }  // namespace hexplore::planning

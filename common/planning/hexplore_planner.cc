@@ -13,6 +13,7 @@
 #include "common/planning/clustering.h"
 #include "common/planning/cost_model.h"
 #include "common/planning/labels.h"
+#include "common/planning/graph_tour.h"
 #include "common/planning/mnss.h"
 #include "common/planning/mtsp/ga_solver.h"
 #include "common/planning/rng.h"
@@ -190,6 +191,13 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
   Rng rng(shared_seed(mix_seed(o.seed, 0x4d4e5353), city_ids));
   std::vector<TaskView>& tour = out.robots[self].route;
   const Route& mine = routes[self];
+  // Each cluster's views are visited in graph order (paper eq. 4-xx-delta: a cluster costs its
+  // graph distances), from where the previous cluster's views end towards the next cluster's
+  // anchor. MNSS picks the set with Euclidean costs (too many candidates for a Dijkstra each);
+  // ordering the picked views on the graph keeps a route from crossing a wall back and forth
+  // between a building's inside and outside (README, "Views in graph order").
+  const int my_graph_species = team.graph_species_of(me.species);
+  std::optional<uint64_t> at_vertex = in.robot_vertices[self];
   for (size_t i = 0; i < mine.size(); ++i) {
     const TaskCluster& cl = clusters[size_t(inst.city_cluster[size_t(mine[i])])];
     const Eigen::Vector3d start = i == 0 ? me.position : clusters[size_t(inst.city_cluster[size_t(mine[i - 1])])].center;
@@ -206,6 +214,13 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
       part = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, my_species, start, end, o, rng, nullptr,
                        &reach[size_t(me.species)]);
     }
+    if (at_vertex && part.size() > 1) {
+      std::optional<uint64_t> next_anchor;
+      if (i + 1 < mine.size())
+        if (const uint64_t a = inst.anchor[size_t(inst.city_cluster[size_t(mine[i + 1])])][size_t(me.species)]) next_anchor = a;
+      part = order_views_on_graph(graph, *at_vertex, part, my_graph_species, next_anchor);
+    }
+    if (!part.empty()) at_vertex = part.back().ground_key;
     tour.insert(tour.end(), part.begin(), part.end());
   }
   if (ablation_ != Ablation::kNoMnss) tour = prune_route(ctx, std::move(tour), my_species, o);
@@ -267,10 +282,12 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
       std::vector<Eigen::Vector3d> around;
       for (int v : owned[r]) around.push_back(views[size_t(v)].position);
       const SpeciesCapability& species = team.species[size_t(req.robots[r].species)];
-      plan.route = prune_route(ctx,
-                               mnss_tour(ctx, views, owned[r], around, 0.5 * o.eta_r_m, species, req.robots[r].position,
-                                         std::nullopt, o, rng, nullptr, &reach[size_t(req.robots[r].species)]),
-                               species, o);
+      std::vector<TaskView> tour = mnss_tour(ctx, views, owned[r], around, 0.5 * o.eta_r_m, species,
+                                             req.robots[r].position, std::nullopt, o, rng, nullptr,
+                                             &reach[size_t(req.robots[r].species)]);
+      // In graph order, like the full planner's clusters (plan()).
+      if (vertex[r]) tour = order_views_on_graph(graph, *vertex[r], tour, team.graph_species_of(req.robots[r].species));
+      plan.route = prune_route(ctx, std::move(tour), species, o);
     }
   }
   out.clusters = int(views.size()) - out.dropped_clusters;

@@ -16,6 +16,7 @@
 #include "common/planning/labels.h"
 #include "common/planning/lloyd_clusters.h"
 #include "common/planning/mdvrp_planner.h"
+#include "common/planning/mnss.h"
 #include "common/planning/mromt_planner.h"
 #include "common/planning/robot_vertex.h"
 #include "common/planning/round_inputs.h"
@@ -365,5 +366,42 @@ TEST(MromtPieces, GraphTourVisitsStopsInTheirOrderAlongALine) {
   EXPECT_NEAR(t.length_m, 19.0, 0.5);
 }
 
+// Two rows of ground 2 m apart with a wall between them, joined only at x = 10 (a door):
+// views alternate between the rows along x. Euclidean order zigzags through the wall; the
+// graph order works along one row, through the door, and back along the other.
+TEST(GraphTour, ViewsOnBothSidesOfAWallAreVisitedOneSideAtATime) {
+  highlevel::TopologyGraph graph({1});
+  auto key = [](int row, int x) { return uint64_t(100 * row + x + 1); };
+  for (int row = 0; row < 2; ++row)
+    for (int x = 0; x <= 10; ++x) {
+      graph.upsert_vertex(key(row, x), {double(x), 2.0 * row, 0.0}, 1);
+      if (x > 0) graph.upsert_edge(key(row, x - 1), key(row, x), 1.0);
+    }
+  graph.upsert_edge(key(0, 10), key(1, 10), 2.0);
+  auto view = [&](int row, int x) {
+    TaskView v;
+    v.key = v.ground_key = key(row, x);
+    v.position = {double(x), 2.0 * row, 0.0};
+    return v;
+  };
+  const std::vector<TaskView> views = {view(1, 3), view(0, 2), view(1, 7), view(0, 6)};
+  auto keys = [](const std::vector<TaskView>& vs) {
+    std::vector<uint64_t> k;
+    for (const auto& v : vs) k.push_back(v.key);
+    return k;
+  };
+  // Euclidean: row 0 x=2, row 1 x=3, row 0 x=6, row 1 x=7 -- three crossings of the wall.
+  EXPECT_EQ(keys(order_views(views, {0, 0, 0}, std::nullopt)), (std::vector<uint64_t>{key(0, 2), key(1, 3), key(0, 6), key(1, 7)}));
+  const auto on_graph = order_views_on_graph(graph, key(0, 0), views, 0);
+  EXPECT_EQ(keys(on_graph), (std::vector<uint64_t>{key(0, 2), key(0, 6), key(1, 7), key(1, 3)}));
+  // Towards an end on row 0 behind the start, row 1 first costs the same door trip but ends
+  // nearer: the end leg counts.
+  const auto towards_end = order_views_on_graph(graph, key(1, 0), views, 0, key(0, 0));
+  EXPECT_EQ(keys(towards_end), (std::vector<uint64_t>{key(1, 3), key(1, 7), key(0, 6), key(0, 2)}));
+  EXPECT_NEAR(graph_tour(graph, key(1, 0), {key(1, 3), key(1, 7), key(0, 6), key(0, 2)}, 0, key(0, 0)).length_m,
+              10.0 + 2.0 + 10.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace hexplore::planning
+
