@@ -17,4 +17,10 @@ std::vector<std::pair<uint64_t, int>> GiveUpSharing::next(const GiveUpLedger& le
   return ledger.given_up_since(since);
 }
 
+bool GiveUpSharing::has_news(const GiveUpLedger& ledger) const {
+  if (whole_next_) return true;
+  if (int(sent_at_.size()) < window_) return ledger.given_up_count() > 0;
+  return ledger.revision() > sent_at_.front();
+}
+
 }  // namespace hexplore::planning

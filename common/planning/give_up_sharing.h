@@ -30,6 +30,9 @@ class GiveUpSharing {
   std::vector<std::pair<uint64_t, int>> next(const GiveUpLedger& ledger);
   // The next message carries the whole set.
   void whole_set_next() { whole_next_ = true; }
+  // Whether the next message has given-up targets to carry that the last `window` did not all
+  // carry (a change newer than the oldest of them), or the whole set was asked for.
+  bool has_news(const GiveUpLedger& ledger) const;
 
  private:
   int window_;

@@ -50,6 +50,7 @@ void PlanningService::setup(service::ServiceContext& context) {
   if (context.lockstep()) options_.ga_time_budget_s = 0.0;
   options_.region = team.exploration_region;
   eta_t_s_ = team.params.eta_t_s;
+  solution_gate_ = SolutionGate(eta_t_s_);
   // Paths keep the bodies clear of the obstacles the map knows (common/highlevel/clearance.h).
   map_ = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team), highlevel::clearance_options(team));
   for (const auto& r : team.robots) positions_[r.id] = r.start_position_m;
@@ -377,11 +378,14 @@ void PlanningService::replan(const std::string& reason) {
   // the given-up targets below still travel, so every robot agrees on what is left (what
   // changed lately, and now and then the whole set: planning::GiveUpSharing).
   if (!active_->shares_route()) solution.clear_sequences();
-  for (const auto& [key, voxels] : give_up_sharing_.next(ledger_)) {
-    solution.add_given_up_supervoxels(key);
-    solution.add_given_up_voxel_counts(uint32_t(std::max(0, voxels)));
+  // The same solution again (an idle robot replans every second) waits for eta_t.
+  if (solution_gate_.should_send(solution, give_up_sharing_.has_news(ledger_), core::ns_to_s(now_ns()))) {
+    for (const auto& [key, voxels] : give_up_sharing_.next(ledger_)) {
+      solution.add_given_up_supervoxels(key);
+      solution.add_given_up_voxel_counts(uint32_t(std::max(0, voxels)));
+    }
+    pub.publish(std::string(topics::kTeamPlan), solution);
   }
-  pub.publish(std::string(topics::kTeamPlan), solution);
   pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route));
   follower_->set_path_species(res.path_species >= 0 ? res.path_species : species_index_);
   follower_->set_route(route, positions_.at(robot_id_), *map_);

@@ -38,6 +38,7 @@
 #include "hexplore/v1/mission.pb.h"
 #include "hexplore/v1/plan.pb.h"
 #include "hexplore/v1/pose.pb.h"
+#include "services/planning/solution_gate.h"
 
 namespace hexplore::planning_service {
 
@@ -102,6 +103,7 @@ class PlanningService : public service::Service {
   std::map<std::string, int64_t> peer_moved_ns_;      // robot id -> now_ns() when it got there
   planning::GiveUpLedger ledger_;                     // targets given up by us and the team
   planning::GiveUpSharing give_up_sharing_;           // which of them the next team solution carries
+  SolutionGate solution_gate_{10.0};                  // whether a round's solution goes out (refresh: eta_t)
   std::map<std::string, uint64_t> shared_rounds_;     // each teammate's latest team-solution round
   std::unique_ptr<planning::RouteFollower> follower_;  // executes our route
   std::unique_ptr<planning::PassingObserver> passing_;  // what we see on the way counts too

@@ -103,6 +103,29 @@ TEST(GiveUpSharing, OnRequestTheNextMessageCarriesTheWholeSetOnce) {
   EXPECT_EQ(share.next(l), (Entries{}));
 }
 
+// has_news says whether next() would carry something the last window messages did not all
+// carry: a message may be skipped (SolutionGate) only when it would not.
+TEST(GiveUpSharing, NewsUntilAChangeHasTravelledInWindowMessages) {
+  GiveUpLedger l;
+  GiveUpSharing share(/*window=*/2, /*full_every=*/1000);
+  EXPECT_FALSE(share.has_news(l));  // nothing given up yet
+  l.merge(1, 10);
+  EXPECT_TRUE(share.has_news(l));
+  share.next(l);
+  EXPECT_TRUE(share.has_news(l));  // in one message of two
+  share.next(l);
+  EXPECT_FALSE(share.has_news(l));  // two messages carried it
+  l.merge(1, 10);                   // a repeat changes nothing
+  EXPECT_FALSE(share.has_news(l));
+  l.merge(2, 10);
+  EXPECT_TRUE(share.has_news(l));
+  share.next(l);
+  share.next(l);
+  EXPECT_FALSE(share.has_news(l));
+  share.whole_set_next();
+  EXPECT_TRUE(share.has_news(l));
+}
+
 TEST(GiveUpSharing, TeammatesThatHearEveryMessageEndWithTheSameSetAndStopSending) {
   // Three robots, each giving up its own targets and merging what the others send: the sets
   // agree, and once nothing changes the messages carry nothing but the periodic whole set.
@@ -112,7 +135,9 @@ TEST(GiveUpSharing, TeammatesThatHearEveryMessageEndWithTheSameSetAndStopSending
     for (int r = 0; r < 3; ++r) {
       if (round < 10) robots[r].observed(uint64_t(100 * r + round), {0, 0, 0}, 5 + round);
       const Entries sent = shares[r].next(robots[r]);
-      if (round >= 20) EXPECT_TRUE(sent.empty()) << "robot " << r << " round " << round;
+      if (round >= 20) {
+        EXPECT_TRUE(sent.empty()) << "robot " << r << " round " << round;
+      }
       for (int other = 0; other < 3; ++other)
         if (other != r)
           for (const auto& [key, voxels] : sent) robots[other].merge(key, voxels);

@@ -64,7 +64,7 @@ class PlanningServiceTest : public ::testing::Test {
     scene.buildings = {{5, 5, 14, 13, 5}};
     scene.rubble = {};
     map_ = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team));
-    map_->apply(planning::synthetic_scene(scene));
+    if (!empty_map_) map_->apply(planning::synthetic_scene(scene));
     hlmap_ = std::make_unique<transport::Responder>(
         host_->transport(), transport::Identity{"r1", "", "hlmap"},
         core::bind_endpoint(team, "r1", ServiceKind::kHlmap, SocketRole::kRequest));
@@ -81,9 +81,14 @@ class PlanningServiceTest : public ::testing::Test {
     peer_sim_ = bind("r2", ServiceKind::kSim);
     watch_ = std::make_unique<transport::Subscriber>(host_->transport(), host_->socket_options());
     watch_->on<v1::TeamSolution>(std::string(topics::kTeamPlan),
-                                 [this](const transport::Received<v1::TeamSolution>& r) { plan_ = r.message; });
-    watch_->on<v1::ExplorationRoute>(topics::route("r1"),
-                                     [this](const transport::Received<v1::ExplorationRoute>& r) { route_ = r.message; });
+                                 [this](const transport::Received<v1::TeamSolution>& r) {
+                                   plan_ = r.message;
+                                   ++plans_received_;
+                                 });
+    watch_->on<v1::ExplorationRoute>(topics::route("r1"), [this](const transport::Received<v1::ExplorationRoute>& r) {
+      route_ = r.message;
+      ++routes_received_;
+    });
     watch_->on<v1::ExecutablePath>(topics::path("r1"),
                                    [this](const transport::Received<v1::ExecutablePath>& r) { path_ = r.message; });
     auto service = std::make_unique<PlanningService>();
@@ -113,6 +118,7 @@ class PlanningServiceTest : public ::testing::Test {
 
   std::string team_yaml_ = kTeam;
   std::map<std::string, std::string> extra_arguments_;
+  bool empty_map_ = false;  // hlmap serves a map with nothing in it
   std::unique_ptr<service::ServiceHost> host_;
   std::unique_ptr<highlevel::HighLevelMap> map_;
   std::unique_ptr<transport::Responder> hlmap_;
@@ -123,6 +129,8 @@ class PlanningServiceTest : public ::testing::Test {
   std::optional<v1::TeamSolution> plan_;
   std::optional<v1::ExplorationRoute> route_;
   std::optional<v1::ExecutablePath> path_;
+  int plans_received_ = 0;   // team solutions
+  int routes_received_ = 0;  // routes: one per round
 };
 
 TEST_F(PlanningServiceTest, FetchesTheMapPlansAndPublishesSolutionRouteAndPath) {
@@ -176,8 +184,9 @@ TEST_F(PlanningServiceTest, BaselinesShareTheirRouteOrNot) {
 }
 
 TEST_F(PlanningServiceTest, ATeammateFinishingItsRouteTriggersARound) {
-  ASSERT_TRUE(until([] {}, [&] { return plan_.has_value(); }));
-  const uint64_t first = plan_->round();
+  // Rounds are counted on the route (one per round; an unchanged team solution is not resent).
+  ASSERT_TRUE(until([] {}, [&] { return route_.has_value(); }));
+  const uint64_t first = route_->round();
   v1::RobotPose pose;
   pose.mutable_pose()->mutable_position_m()->set_x(20.5);
   pose.mutable_pose()->mutable_position_m()->set_y(1.5);
@@ -188,7 +197,7 @@ TEST_F(PlanningServiceTest, ATeammateFinishingItsRouteTriggersARound) {
         pose.set_state(sent++ < 4 ? v1::MOTION_STATE_MOVING : v1::MOTION_STATE_IDLE);
         peer_sim_->publish(topics::kTeamPose, pose);
       },
-      [&] { return plan_->round() > first; }, std::chrono::milliseconds(5000)));
+      [&] { return route_->round() > first; }, std::chrono::milliseconds(5000)));
 }
 
 // A teammate whose services died still stands where it was last heard, and no safety layer
@@ -262,6 +271,23 @@ TEST_F(GivenUpSharingTest, ATeammatesGiveUpsArePassedOnAndGoWholeToARestartedPla
   theirs.set_round(1);
   ASSERT_TRUE(until([&] { peer_planning.publish(topics::kTeamPlan, theirs); }, carries))
       << "a restarted teammate did not get the whole set";
+}
+
+// A robot with nothing to do replans every min-replan-s ("route finished" holds while its route
+// is empty) and gets the same solution each time: it goes on the radio once, then once per eta_t
+// (SolutionGate), not once per round.
+class IdleRobotTest : public PlanningServiceTest {
+ protected:
+  IdleRobotTest() {
+    team_yaml_ = std::string(kTeam) + "  eta_t_s: 30\n";
+    empty_map_ = true;
+  }
+};
+
+TEST_F(IdleRobotTest, AnUnchangedSolutionIsNotSentEveryRound) {
+  ASSERT_TRUE(until([] {}, [&] { return routes_received_ >= 6; })) << routes_received_ << " rounds";
+  EXPECT_EQ(route_->views_size(), 0);
+  EXPECT_EQ(plans_received_, 1) << routes_received_ << " rounds";
 }
 
 // A bad option stops the service before it starts, with an error naming the flag (the process
