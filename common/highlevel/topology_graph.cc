@@ -315,6 +315,52 @@ std::unordered_map<uint64_t, double> TopologyGraph::distances_from(uint64_t a, i
   return out;
 }
 
+std::vector<double> TopologyGraph::distances_to(uint64_t a, const std::vector<uint64_t>& targets,
+                                                int species_index) const {
+  std::vector<double> out(targets.size(), kUnreachable);
+  if (!passable(a, species_index)) return out;
+  const int source = index_of(a);
+  // Target vertex -> its positions in `targets` (passable ones only; the rest stay unreachable).
+  std::unordered_map<int, std::vector<size_t>> wanted;
+  for (size_t i = 0; i < targets.size(); ++i)
+    if (passable(targets[i], species_index)) wanted[index_of(targets[i])].push_back(i);
+  {
+    std::lock_guard lock(cache_.mutex);
+    if (auto it = cache_.searches.find(cache_key(source, species_index)); it != cache_.searches.end()) {
+      for (const auto& [v, at] : wanted)
+        for (size_t i : at) out[i] = it->second->distance[size_t(v)];
+      return out;
+    }
+  }
+  // Dijkstra as in search(), with the same edge costs, until every wanted vertex is settled.
+  const int level = levels_[species_index];
+  std::unordered_map<int, double> dist;
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  dist[source] = 0.0;
+  open.emplace(0.0, source);
+  size_t left = wanted.size();
+  while (!open.empty() && left > 0) {
+    const auto [d, u] = open.top();
+    open.pop();
+    if (d > dist[u]) continue;
+    if (const auto w = wanted.find(u); w != wanted.end()) {
+      for (size_t i : w->second) out[i] = d;
+      --left;
+    }
+    for (const auto& [v, len] : vertices_[u].adjacent) {
+      if (vertices_[v].requirement > level) continue;
+      const double nd = d + len + penalty(vertices_[v], species_index);
+      const auto it = dist.find(v);
+      if (it == dist.end() || nd < it->second) {
+        dist[v] = nd;
+        open.emplace(nd, v);
+      }
+    }
+  }
+  return out;
+}
+
 std::optional<uint64_t> TopologyGraph::nearest(const Eigen::Vector3d& p) const { return nearest_impl(p, -1); }
 
 std::optional<uint64_t> TopologyGraph::nearest(const Eigen::Vector3d& p, int species_index) const {

@@ -12,8 +12,9 @@ GraphTour graph_tour(const highlevel::TopologyGraph& graph, uint64_t start, cons
   GraphTour out;
   const int n = int(stops.size());
   if (n == 0) return out;
-  // Node 0 is the start, node i + 1 stop i, node n + 1 the end (if any); one Dijkstra per
-  // distinct vertex a leg leaves from (the end is only arrived at).
+  // Node 0 is the start, node i + 1 stop i, node n + 1 the end (if any); one search per
+  // distinct vertex a leg leaves from (the end is only arrived at), stopping once it has
+  // settled every stop.
   const int nodes = n + 2;
   const int end_node = n + 1;
   std::vector<uint64_t> key(static_cast<size_t>(nodes), 0);
@@ -25,13 +26,16 @@ GraphTour graph_tour(const highlevel::TopologyGraph& graph, uint64_t start, cons
   for (int i = 1; i <= n + (end ? 1 : 0); ++i) targets[key[size_t(i)]].push_back(i);
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<std::vector<double>> d(size_t(nodes), std::vector<double>(size_t(nodes), inf));
+  std::vector<uint64_t> target_keys;
+  for (const auto& [target, columns] : targets) target_keys.push_back(target);
   for (const auto& [source, rows] : sources) {
-    const auto dist = graph.distances_from(source, species);
+    const std::vector<double> dist = graph.distances_to(source, target_keys, species);
+    size_t t = 0;
     for (const auto& [target, columns] : targets) {
-      const auto it = dist.find(target);
-      if (it == dist.end()) continue;
+      const double len = dist[t++];
+      if (len == highlevel::TopologyGraph::kUnreachable) continue;
       for (int a : rows)
-        for (int b : columns) d[size_t(a)][size_t(b)] = it->second;
+        for (int b : columns) d[size_t(a)][size_t(b)] = len;
     }
   }
 

@@ -77,6 +77,26 @@ TEST(TopologyGraph, DistanceAndPathEqualFloydWarshallOnRandomGraphs) {
   }
 }
 
+// distances_to answers what dist() would, by a search that stops early (nothing cached yet)
+// and from the cached search once there is one; clearance costs included.
+TEST(TopologyGraph, DistancesToEqualDistWithAndWithoutACachedSearch) {
+  for (uint32_t seed = 1; seed <= 4; ++seed) {
+    auto g = random_graph(80 + 20 * static_cast<int>(seed), seed);
+    g.set_body_radii({0.5, 0.6, 0.7});
+    const auto keys = g.vertex_keys();
+    for (size_t i = 0; i < keys.size(); i += 3) g.set_clearance(keys[i], 0.1 * double(i % 7), {});
+    for (int species = 0; species < g.species_count(); ++species)
+      for (size_t a = 0; a < keys.size(); a += 9) {
+        std::vector<uint64_t> targets = {keys[a], 999999};  // itself, and a key not in the graph
+        for (size_t b = (a * 7) % keys.size(), n = 0; n < 6; b = (b + 11) % keys.size(), ++n) targets.push_back(keys[b]);
+        const auto early = g.distances_to(keys[a], targets, species);
+        for (size_t t = 0; t < targets.size(); ++t)  // dist() caches the whole search of keys[a]
+          EXPECT_EQ(early[t], g.dist(keys[a], targets[t], species)) << seed << " " << species << " " << a << " " << t;
+        EXPECT_EQ(g.distances_to(keys[a], targets, species), early);
+      }
+  }
+}
+
 TEST(TopologyGraph, CachedAnswersFollowGraphChanges) {
   auto g = random_graph(120, 42);
   std::mt19937 rng(5);
