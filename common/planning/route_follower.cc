@@ -138,7 +138,32 @@ std::optional<MotionOrder> RouteFollower::step(double now_s, const Eigen::Vector
   last_step_s_ = now_s;
   judge(now_s, map, ledger);
   track_progress(now_s, position, state);
+  std::optional<MotionOrder> order = next_order(now_s, position, map, keep_off, ledger);
+  if (order) {
+    holding_ = false;
+    return order;
+  }
+  // Nothing left to drive to while the last order still pushes the robot into what blocked it
+  // (the leg it skipped, or a back-off that was blocked too): the driver keeps trying that path
+  // and the robot stays BLOCKED while it has no work (multi-building, seed 1: slugcat1 for 69 s).
+  // Hold where it stands, once.
+  if (state == DriveState::kBlocked && !driving_ && !backing_off_ && !holding_) {
+    holding_ = true;
+    return hold(position);
+  }
+  return std::nullopt;
+}
 
+MotionOrder RouteFollower::hold(const Eigen::Vector3d& position) {
+  MotionOrder order;  // an empty path: the safety layer stops the robot ("no path")
+  order.path.goal.position = position;
+  return order;
+}
+
+std::optional<MotionOrder> RouteFollower::next_order(double now_s, const Eigen::Vector3d& position,
+                                                     const highlevel::HighLevelMap& map,
+                                                     const std::unordered_set<uint64_t>& keep_off,
+                                                     GiveUpLedger& ledger) {
   if (observing_) {
     // Each aim lasts its time (plan_aims: the target's observation time, or its share of the
     // view's) and ends early once its target is complete (or given up): a look at one target

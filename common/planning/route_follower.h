@@ -116,7 +116,8 @@ class RouteFollower {
   void clear();
 
   // One control cycle at sim time `now_s`. Returns the order to send when it changed (a new
-  // path, a new aim); nullopt when the last order stands. `keep_off`: vertices no path may
+  // path, a new aim, or an empty path to stand still when a blocked robot has nothing left to
+  // drive to); nullopt when the last order stands. `keep_off`: vertices no path may
   // enter besides those the robot was blocked at (e.g. around a silent teammate).
   std::optional<MotionOrder> step(double now_s, const Eigen::Vector3d& position, DriveState state,
                                   const highlevel::HighLevelMap& map, const std::unordered_set<uint64_t>& keep_off,
@@ -142,6 +143,11 @@ class RouteFollower {
     double due_s;
   };
 
+  // What to do now besides holding (step() adds that): nullopt when the last order stands.
+  std::optional<MotionOrder> next_order(double now_s, const Eigen::Vector3d& position,
+                                        const highlevel::HighLevelMap& map,
+                                        const std::unordered_set<uint64_t>& keep_off, GiveUpLedger& ledger);
+  static MotionOrder hold(const Eigen::Vector3d& position);
   std::optional<MotionOrder> drive(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
                                    const std::unordered_set<uint64_t>& keep_off, GiveUpLedger& ledger);
   std::optional<MotionOrder> begin_observing(double now_s, const Eigen::Vector3d& position,
@@ -197,6 +203,7 @@ class RouteFollower {
   std::vector<Eigen::Vector3d> trail_;
   std::optional<Eigen::Vector3d> backoff_;
   bool backing_off_ = false;  // the order sent is the back-off leg to *backoff_
+  bool holding_ = false;      // the order sent is to stand still (nothing left, was blocked)
   std::unordered_set<uint64_t> avoid_;
   std::vector<uint64_t> path_keys_;
   std::vector<Eigen::Vector3d> path_points_;

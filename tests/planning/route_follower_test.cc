@@ -422,6 +422,40 @@ TEST(RouteFollower, BacksOffAsALegOfItsOwnThenPlansTheNextPathFromThere) {
   EXPECT_EQ(after->path.goal.ground_key, beyond.ground_key);
 }
 
+TEST(RouteFollower, ABlockedRobotWithNothingLeftToDoIsToldToStandStill) {
+  // Blocked on the way to its last view, and blocked again backing off: without a new order the
+  // driver keeps pushing along the old path and the robot stays BLOCKED while it has no work
+  // (multi-building, seed 1: slugcat1 for 69 s). The follower orders it to stand, once.
+  Drive d;
+  RouteFollower f(d.options, 0);
+  f.set_route({view_at(d.map, {10.5, 1.5, 0}, true)}, {1.5, 1.5, 0}, d.map);
+  double t = 0.0;
+  for (double x = 1.5; x <= 4.0; x += 0.25, t += 0.5)
+    f.step(t, {x, 1.5, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  const Eigen::Vector3d stuck(4.0, 1.5, 0);
+  std::optional<MotionOrder> back;
+  for (int i = 0; i < 20 && !back; ++i, t += 0.2) back = f.step(t, stuck, DriveState::kBlocked, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(back);
+  ASSERT_EQ(back->path.waypoints.size(), 1u);  // the back-off leg
+  std::optional<MotionOrder> hold;
+  for (int i = 0; i < 20 && !hold; ++i, t += 0.2) hold = f.step(t, stuck, DriveState::kBlocked, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(hold) << "the back-off was blocked and nothing is left: the robot must be stopped";
+  EXPECT_TRUE(hold->path.waypoints.empty());
+  EXPECT_FALSE(hold->observing);
+  EXPECT_TRUE(f.finished());
+  // Once: the driver has the order, until it reports the stop.
+  EXPECT_FALSE(f.step(t + 0.2, stuck, DriveState::kBlocked, d.map, d.keep_off, d.ledger));
+  EXPECT_FALSE(f.step(t + 0.4, stuck, DriveState::kStopped, d.map, d.keep_off, d.ledger));
+  // A route that simply ends (the robot idle at its last view) needs no such order.
+  RouteFollower g(d.options, 0);
+  const TaskView last = view_at(d.map, {5.5, 1.5, 0}, false);
+  g.set_route({last}, {1.5, 1.5, 0}, d.map);
+  ASSERT_TRUE(g.step(0.0, {1.5, 1.5, 0}, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  EXPECT_FALSE(g.step(1.0, last.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  EXPECT_TRUE(g.finished());
+  EXPECT_FALSE(g.step(2.0, last.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+}
+
 TEST(RouteFollower, ADwellEndsAsSoonAsItsTargetsAreComplete) {
   Drive d;
   RouteFollower f(d.options, 0);
