@@ -335,12 +335,13 @@ void PlanningService::replan(const std::string& reason) {
     core::LogLine(core::LogLevel::kError, "planning") << robot_id_ << ": round " << round_ << " failed: " << e.what();
     return;
   }
+  v1::TeamSolution solution = planning::to_proto(res);
   // Our own solution is a reference candidate next round, like the teammates', at the precision
   // they decode it with (the radio rounds coordinates), so that every robot weighs the same numbers.
   if (active_->shares_route()) {
     const transport::SocketOptions wire = context_->socket_options();
     shared_[robot_id_] = planning::reference_from_proto(
-        radio::as_received(planning::to_proto(res), wire.codecs.get(), wire.roster.get()), robot_id_);
+        radio::as_received(solution, wire.codecs.get(), wire.roster.get()), robot_id_);
   }
   const std::vector<planning::TaskView>& route = res.robots[size_t(req.self)].route;
 
@@ -373,7 +374,6 @@ void PlanningService::replan(const std::string& reason) {
   }
 
   auto& pub = context_->publisher();
-  v1::TeamSolution solution = planning::to_proto(res);
   // Planners that share no route (MROMT+, TSPGA+) send the solution without its sequences:
   // the given-up targets below still travel, so every robot agrees on what is left (what
   // changed lately, and now and then the whole set: planning::GiveUpSharing).
