@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/sim/local_maneuver.h"
 #include "common/sim/scene_error.h"
 
 namespace hexplore::sim {
@@ -18,6 +19,10 @@ constexpr double kPassByM = 0.35;
 // How far back a body may retrace its own poses to find room to turn: 40 moves of up to
 // kMaxSubstepM, or turns.
 constexpr size_t kTrailPoses = 40;
+// A manoeuvre ends within ManeuverOptions::reach_m of its waypoint, which then counts as
+// reached; a waypoint this close to one a manoeuvre was searched for is the same goal.
+constexpr double kManeuverReachM = 0.1;
+constexpr double kSameGoalM = 0.05;
 
 double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
@@ -68,7 +73,10 @@ void RobotMotion::follow(std::vector<Eigen::Vector3d> waypoints, double speed_mp
   if (state_ == MotionState::kEmergencyStop) return;
   path_ = std::move(waypoints);
   next_ = 0;
-  while (next_ + 1 < path_.size() && (path_[next_].head<2>() - footprint_.xy).norm() < kPassByM) ++next_;
+  // A manoeuvre under way is finished first (it is short, and the safety layer re-sends the
+  // path every cycle); a path to nowhere ends it.
+  if (path_.empty()) maneuver_.clear();
+  pass_by_near_waypoints();
   speed_mps_ = speed_mps > 0 ? std::min(speed_mps, species().speed_mps) : species().speed_mps;
   block_reason_ = TerrainVerdict::kOk;
   reversing_ = false;
@@ -78,12 +86,14 @@ void RobotMotion::follow(std::vector<Eigen::Vector3d> waypoints, double speed_mp
 void RobotMotion::stop() {
   if (state_ == MotionState::kEmergencyStop) return;
   path_.clear();
+  maneuver_.clear();
   next_ = 0;
   state_ = MotionState::kStopped;
 }
 
 void RobotMotion::emergency_stop() {
   path_.clear();
+  maneuver_.clear();
   next_ = 0;
   state_ = MotionState::kEmergencyStop;
 }
@@ -102,13 +112,68 @@ void RobotMotion::block(TerrainVerdict why) {
   reversing_ = false;
   state_ = MotionState::kBlocked;
   path_.clear();
+  maneuver_.clear();
   next_ = 0;
+}
+
+void RobotMotion::pass_by_near_waypoints() {
+  while (next_ + 1 < path_.size() && (path_[next_].head<2>() - footprint_.xy).norm() < kPassByM) ++next_;
+}
+
+void RobotMotion::next_waypoint() {
+  ++next_;
+  reversing_ = false;
+  maneuver_goal_.reset();
+}
+
+bool RobotMotion::start_maneuver() {
+  const Eigen::Vector2d goal = path_[next_].head<2>();
+  // Once per waypoint: where no manoeuvre reaches it, searching again every cycle would only
+  // cost time (the safety layer re-sends the same path).
+  if (maneuver_goal_ && (*maneuver_goal_ - goal).norm() < kSameGoalM) return false;
+  maneuver_goal_ = goal;
+  const auto poses = plan_maneuver(probe_, footprint_, goal);
+  if (!poses || poses->empty()) return false;
+  maneuver_.assign(poses->begin(), poses->end());
+  reversing_ = false;
+  ++maneuvers_;
+  return true;
+}
+
+double RobotMotion::drive_maneuver(double budget) {
+  const Footprint& to = maneuver_.front();
+  const Eigen::Vector2d delta = to.xy - footprint_.xy;
+  const double dist = delta.norm();
+  const double move = std::min({budget, dist, kMaxSubstepM});
+  const Eigen::Vector3d a = ground_position();
+  remember(footprint_);
+  if (move >= dist - 1e-9) {  // a turn (no distance), or the rest of a move
+    footprint_ = to;
+    maneuver_.pop_front();
+  } else if (const auto part = probe_.footprint(footprint_.xy + move * delta / dist, to.yaw, footprint_.heights)) {
+    footprint_ = *part;  // within a move checked whole when it was planned
+  } else {
+    maneuver_.clear();
+    block(TerrainVerdict::kNoGround);
+    return budget;
+  }
+  odometry_m_ += (ground_position() - a).norm();
+  if (maneuver_.empty() && next_ < path_.size()) {
+    // At the waypoint it was for (or the path changed meanwhile): on along the path from here.
+    if ((path_[next_].head<2>() - footprint_.xy).norm() <= kManeuverReachM) next_waypoint();
+    pass_by_near_waypoints();
+  }
+  return move;
 }
 
 void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
   const Eigen::Vector3d before = body_pose().translation();
   double budget = state_ == MotionState::kMoving ? speed_mps_ * dt_s : 0.0;
   while (state_ == MotionState::kMoving && budget > 1e-9) {
+    if (!maneuver_.empty()) {
+      budget -= drive_maneuver(budget);
+      continue;
+    }
     if (next_ >= path_.size()) {
       state_ = MotionState::kIdle;
       break;
@@ -116,8 +181,7 @@ void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
     const Eigen::Vector2d delta = path_[next_].head<2>() - footprint_.xy;
     const double dist = delta.norm();
     if (dist < kWaypointReachedM) {
-      ++next_;
-      reversing_ = false;
+      next_waypoint();
       continue;
     }
     // Face the waypoint (turning in place), or, when the body cannot turn that far where it
@@ -143,7 +207,10 @@ void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
         budget -= step;
         continue;
       }
-      if (!turned) return block(why);
+      if (!turned) {
+        if (start_maneuver()) continue;
+        return block(why);
+      }
       if (std::abs(wrap(turned->yaw - footprint_.yaw)) > 1e-3) remember(footprint_);
       footprint_ = *turned;
     }
@@ -152,7 +219,10 @@ void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
     const auto next = probe_.footprint(xy, footprint_.yaw, footprint_.heights);
     if (!next) return block(TerrainVerdict::kNoGround);
     const TerrainVerdict v = probe_.check(*next, &footprint_, reversing_ ? Travel::kBackward : Travel::kForward);
-    if (v != TerrainVerdict::kOk) return block(v);
+    if (v != TerrainVerdict::kOk) {
+      if (start_maneuver()) continue;
+      return block(v);
+    }
     const Eigen::Vector3d a = ground_position();
     remember(footprint_);
     footprint_ = *next;
@@ -161,7 +231,7 @@ void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
   }
   if (state_ == MotionState::kMoving && next_ < path_.size() &&
       (path_[next_].head<2>() - footprint_.xy).norm() < kWaypointReachedM)
-    ++next_;
+    next_waypoint();
   if (state_ == MotionState::kMoving && next_ >= path_.size()) state_ = MotionState::kIdle;
   velocity_ = dt_s > 0 ? Eigen::Vector3d((body_pose().translation() - before) / dt_s) : Eigen::Vector3d::Zero();
 

@@ -2,12 +2,15 @@
 // One simulated robot body: follows a commanded waypoint path at its species' speed with
 // its pose projected onto the ground truth, turning in place towards each waypoint or, where
 // its body cannot turn, reversing to it, or first backing up the way it came (its last poses)
-// until it can turn; stops with BLOCKED when the terrain in the way exceeds the species'
-// limits, and counts contacts with teammates' bodies. Advanced by
+// until it can turn; where a move or turn is still refused, it manoeuvres to the waypoint as a
+// local planner would (local_maneuver.h), and stops with BLOCKED only when that finds no way
+// either, or the terrain in the way exceeds the species' limits; counts contacts with
+// teammates' bodies. Advanced by
 // step(dt) only, so a lockstep driver reproduces a run exactly.
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <set>
 #include <span>
 #include <vector>
@@ -51,6 +54,7 @@ class RobotMotion {
   Eigen::Vector3d velocity() const { return velocity_; }
   double odometry_m() const { return odometry_m_; }
   uint32_t collisions() const { return collisions_; }
+  uint32_t maneuvers() const { return maneuvers_; }  // manoeuvres started so far
   size_t waypoints_left() const { return path_.size() - next_; }
   bool reversing() const { return reversing_; }
   ProxyBox body_box() const;
@@ -58,6 +62,13 @@ class RobotMotion {
 
  private:
   void block(TerrainVerdict why);
+  void pass_by_near_waypoints();  // leading waypoints closer than a pass-by distance
+  void next_waypoint();
+  // A move or turn was refused: plan a manoeuvre to the waypoint (local_maneuver.h), once
+  // per waypoint. True when one was found and is now under way.
+  bool start_maneuver();
+  // Drives the manoeuvre's next pose within `budget` metres; returns the metres used.
+  double drive_maneuver(double budget);
   void remember(const Footprint& f);
 
   TerrainProbe probe_;
@@ -68,6 +79,9 @@ class RobotMotion {
   std::vector<Eigen::Vector3d> path_;
   size_t next_ = 0;
   bool reversing_ = false;  // driving backwards to path_[next_]
+  std::deque<Footprint> maneuver_;                // poses still to drive, each a move or a turn
+  std::optional<Eigen::Vector2d> maneuver_goal_;  // the waypoint a manoeuvre was last searched for
+  uint32_t maneuvers_ = 0;
   std::deque<Footprint> trail_;  // poses before the latest moves and turns, newest last
   double speed_mps_ = 0.0;
   Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();

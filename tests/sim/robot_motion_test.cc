@@ -318,12 +318,39 @@ TEST(RobotMotion, WheeledRobotTurnsRoundInTheNarrowestOfficeRoom) {
       << "out: " << to_string(robot.block_reason()) << " at " << robot.ground_position().transpose();
   EXPECT_LT((robot.ground_position() - corridor).norm(), 1e-3);
   // Leaving at a slant instead (what a path through waypoints off the door's axis asks for)
-  // runs into the jamb: the body stops there, blocked, as SLUGCAT did in the office mission.
+  // runs into the jamb; the body manoeuvres through the door instead of stopping there.
   RobotMotion slant(caster, core::builtin_mr1000(), inside, std::atan2(-into, 0.0));
   const Eigen::Vector3d aside(door_x + 0.9, wall_y - into * 0.9, 0);
-  EXPECT_EQ(drive(slant, {aside}, 60), MotionState::kBlocked);
-  EXPECT_EQ(slant.block_reason(), TerrainVerdict::kObstacle);
-  EXPECT_TRUE(room.interior.contains(slant.ground_position().x(), slant.ground_position().y()));
+  EXPECT_EQ(drive(slant, {aside}, 60), MotionState::kIdle)
+      << to_string(slant.block_reason()) << " at " << slant.ground_position().transpose();
+  EXPECT_GE(slant.maneuvers(), 1u);
+  EXPECT_LT((slant.ground_position() - aside).head<2>().norm(), 0.1);  // a manoeuvre's reach
+}
+
+// office, seed 1: the SLUGCAT stood at the door of a room for 300 s (lockstep mission, from
+// 874 s on): every path out came to the door past a waypoint beside its jamb, the straight line
+// on clipped the jamb, and there was no room to turn there. It now manoeuvres out; a waypoint
+// no manoeuvre reaches (inside a wall) still leaves it BLOCKED, after one search.
+TEST(RobotMotion, ABodyWedgedBesideADoorJambManoeuvresOut) {
+  const auto layout = detail::office_layout(1);
+  const auto scene = generate_scene("office", 1);
+  const RayCaster caster(scene.mesh);
+  const auto& room = layout.rooms.front();  // the south-west room; its door faces north
+  ASSERT_TRUE(room.door_faces_north);
+  const double wall_y = 0.5 * (room.door.y0 + room.door.y1);
+  const double beside_jamb = room.door.x1 - 0.1;
+  const Eigen::Vector3d inside(beside_jamb + 0.8, wall_y - 1.3, 0), by_jamb(beside_jamb, wall_y - 0.6, 0);
+  const Eigen::Vector3d corridor(beside_jamb, wall_y + 0.6, 0), along(beside_jamb - 5.0, wall_y + 1.0, 0);
+  for (double yaw_deg : {90.0, 135.0, 180.0}) {
+    RobotMotion robot(caster, core::builtin_slugcat(), inside, yaw_deg * M_PI / 180);
+    EXPECT_EQ(drive(robot, {by_jamb, corridor, along}, 60), MotionState::kIdle)
+        << yaw_deg << ": " << to_string(robot.block_reason()) << " at " << robot.ground_position().transpose();
+    EXPECT_GE(robot.maneuvers(), 1u) << yaw_deg;
+  }
+  RobotMotion robot(caster, core::builtin_slugcat(), inside, M_PI / 2);
+  const Eigen::Vector3d in_the_wall(room.door.x1 + 0.5, wall_y, 0);
+  EXPECT_EQ(drive(robot, {by_jamb, in_the_wall}, 60), MotionState::kBlocked);
+  EXPECT_EQ(robot.maneuvers(), 0u);  // searched once, found nothing
 }
 
 }  // namespace
