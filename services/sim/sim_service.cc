@@ -90,6 +90,9 @@ void SimService::setup(service::ServiceContext& context) {
   blocked_ = m.counter_family("hexplore_sim_blocked_total", "Times the robot stopped on terrain beyond its limits")
                  ->add(labels);
   collisions_ = m.counter_family("hexplore_sim_collisions_total", "Contacts between this robot and a teammate")->add(labels);
+  maneuvers_ = m.counter_family("hexplore_sim_maneuvers_total",
+                                "Manoeuvres round an obstacle the path's straight line ran into (local_maneuver.h)")
+                   ->add(labels);
   emergency_stops_ = m.counter_family("hexplore_sim_emergency_stops_total", "Emergency stops obeyed")->add(labels);
   odometry_m_ = m.gauge_family("hexplore_sim_odometry_meters", "Trajectory length travelled")->add(labels);
   sim_time_s_ = m.gauge_family("hexplore_sim_time_seconds", "Simulation time")->add(labels);
@@ -209,6 +212,10 @@ void SimService::tick() {
                                                << ") at " << where;
   }
   last_state_ = motion_->state();
+  if (motion_->maneuvers() > reported_maneuvers_) {
+    maneuvers_->increment(motion_->maneuvers() - reported_maneuvers_);
+    reported_maneuvers_ = motion_->maneuvers();
+  }
   if (motion_->collisions() > reported_collisions_) {
     collisions_->increment(motion_->collisions() - reported_collisions_);
     reported_collisions_ = motion_->collisions();

@@ -87,10 +87,12 @@ class SimService : public service::Service {
   int64_t next_scan_ns_ = 0;
   sim::MotionState last_state_ = sim::MotionState::kIdle;
   uint32_t reported_collisions_ = 0;
+  uint32_t reported_maneuvers_ = 0;
   radio::PoseSchedule team_pose_schedule_;
   std::optional<uint32_t> radio_slot_;  // this robot's slot when a radio model wants positions
 
   metrics::Counter* blocked_ = nullptr;
+  metrics::Counter* maneuvers_ = nullptr;
   metrics::Counter* collisions_ = nullptr;
   metrics::Counter* emergency_stops_ = nullptr;
   metrics::Gauge* odometry_m_ = nullptr;
