@@ -23,9 +23,25 @@ double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
 }  // namespace
 
+ProxyBox body_box_at(const TerrainProbe& probe, const Footprint& pose, double margin_m) {
+  const Eigen::Isometry3d p = probe.body_pose(pose);
+  ProxyBox b;
+  b.center = p.translation();
+  b.orientation = Eigen::Quaterniond(p.linear());
+  b.half_extents = probe.species().body_half_extents_m + Eigen::Vector3d::Constant(margin_m);
+  return b;
+}
+
 std::optional<std::vector<Footprint>> plan_maneuver(const TerrainProbe& probe, const Footprint& from,
-                                                    const Eigen::Vector2d& goal, const ManeuverOptions& options) {
+                                                    const Eigen::Vector2d& goal, std::span<const ProxyBox> teammates,
+                                                    const ManeuverOptions& options) {
   if ((goal - from.xy).norm() > options.max_goal_m) return std::nullopt;
+  auto clear_of_teammates = [&](const Footprint& pose) {
+    const ProxyBox body = body_box_at(probe, pose, options.teammate_margin_m);
+    for (const ProxyBox& mate : teammates)
+      if (boxes_overlap(body, mate)) return false;
+    return true;
+  };
   const double step_rad = 2.0 * M_PI / options.headings;
   Eigen::AlignedBox2d window(from.xy.cwiseMin(goal), from.xy.cwiseMax(goal));
   window.min().array() -= options.window_m;
@@ -50,6 +66,7 @@ std::optional<std::vector<Footprint>> plan_maneuver(const TerrainProbe& probe, c
   open.push({estimate(from.xy), 0});
 
   auto add = [&](int parent, const Footprint& pose, int heading, double step_cost) {
+    if (!clear_of_teammates(pose)) return;
     const double cost = nodes[size_t(parent)].cost + step_cost;
     const uint64_t k = key(pose.xy, heading);
     const auto it = best.find(k);

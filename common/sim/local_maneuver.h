@@ -5,14 +5,18 @@
 // robot's local planner finds its way with its costmap; this one searches the ground truth
 // the same way every move is checked: Hybrid A* over positions (0.1 m cells, continuous
 // within them) and headings (32 per turn), with straight moves forwards and backwards and
-// turns in place as the actions, each checked by the TerrainProbe like any move. Used by
-// RobotMotion only when a move or a turn is refused, so free driving costs nothing.
+// turns in place as the actions, each checked by the TerrainProbe like any move, and kept
+// clear of teammates' bodies (a local planner's costmap has them; the safety layer's detours
+// are not followed while the body manoeuvres). Used by RobotMotion only when a move or a turn
+// is refused, so free driving costs nothing.
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "common/sim/proxy_box.h"
 #include "common/sim/terrain_probe.h"
 
 namespace hexplore::sim {
@@ -24,15 +28,20 @@ struct ManeuverOptions {
   double reach_m = 0.08;           // the goal counts as reached this close
   double window_m = 2.0;           // search no farther than this around start and goal
   double max_goal_m = 3.0;         // a goal farther away is not planned for
-  int max_expansions = 20000;      // then give up (the body is blocked)
+  int max_expansions = 8000;       // then give up (the body is blocked): about 0.3 s
   double reverse_cost = 1.5;       // per metre backwards, against 1 forwards
   double turn_cost_m = 0.05;       // per heading step, in metres of driving
+  double teammate_margin_m = 0.15; // the body, grown by this, never overlaps a teammate's
 };
+
+// The body of `probe`'s species at `pose`, grown by `margin_m` on every side.
+ProxyBox body_box_at(const TerrainProbe& probe, const Footprint& pose, double margin_m = 0.0);
 
 // The poses, from the first after `from` to one within reach of `goal`, each one move or one
 // turn away from the previous (so each can be driven as it stands); nullopt when no
 // manoeuvre within the window reaches the goal.
 std::optional<std::vector<Footprint>> plan_maneuver(const TerrainProbe& probe, const Footprint& from,
-                                                    const Eigen::Vector2d& goal, const ManeuverOptions& options = {});
+                                                    const Eigen::Vector2d& goal, std::span<const ProxyBox> teammates,
+                                                    const ManeuverOptions& options = {});
 
 }  // namespace hexplore::sim

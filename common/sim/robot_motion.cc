@@ -126,13 +126,16 @@ void RobotMotion::next_waypoint() {
   maneuver_goal_.reset();
 }
 
-bool RobotMotion::start_maneuver() {
+bool RobotMotion::start_maneuver(std::span<const ProxyBox> teammates) {
   const Eigen::Vector2d goal = path_[next_].head<2>();
   // Once per waypoint: where no manoeuvre reaches it, searching again every cycle would only
   // cost time (the safety layer re-sends the same path).
   if (maneuver_goal_ && (*maneuver_goal_ - goal).norm() < kSameGoalM) return false;
   maneuver_goal_ = goal;
-  const auto poses = plan_maneuver(probe_, footprint_, goal);
+  std::vector<ProxyBox> others;
+  for (const ProxyBox& mate : teammates)
+    if (mate.id != id_) others.push_back(mate);
+  const auto poses = plan_maneuver(probe_, footprint_, goal, others);
   if (!poses || poses->empty()) return false;
   maneuver_.assign(poses->begin(), poses->end());
   reversing_ = false;
@@ -140,8 +143,16 @@ bool RobotMotion::start_maneuver() {
   return true;
 }
 
-double RobotMotion::drive_maneuver(double budget) {
+double RobotMotion::drive_maneuver(double budget, std::span<const ProxyBox> teammates) {
   const Footprint& to = maneuver_.front();
+  // Teammates move meanwhile: one now in the way ends the manoeuvre (blocked: the planner and
+  // the safety layer take it from there).
+  const ProxyBox body = body_box_at(probe_, to);
+  for (const ProxyBox& mate : teammates)
+    if (mate.id != id_ && boxes_overlap(body, mate)) {
+      block(TerrainVerdict::kObstacle);
+      return budget;
+    }
   const Eigen::Vector2d delta = to.xy - footprint_.xy;
   const double dist = delta.norm();
   const double move = std::min({budget, dist, kMaxSubstepM});
@@ -171,7 +182,7 @@ void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
   double budget = state_ == MotionState::kMoving ? speed_mps_ * dt_s : 0.0;
   while (state_ == MotionState::kMoving && budget > 1e-9) {
     if (!maneuver_.empty()) {
-      budget -= drive_maneuver(budget);
+      budget -= drive_maneuver(budget, teammates);
       continue;
     }
     if (next_ >= path_.size()) {
@@ -208,7 +219,7 @@ void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
         continue;
       }
       if (!turned) {
-        if (start_maneuver()) continue;
+        if (start_maneuver(teammates)) continue;
         return block(why);
       }
       if (std::abs(wrap(turned->yaw - footprint_.yaw)) > 1e-3) remember(footprint_);
@@ -220,7 +231,7 @@ void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
     if (!next) return block(TerrainVerdict::kNoGround);
     const TerrainVerdict v = probe_.check(*next, &footprint_, reversing_ ? Travel::kBackward : Travel::kForward);
     if (v != TerrainVerdict::kOk) {
-      if (start_maneuver()) continue;
+      if (start_maneuver(teammates)) continue;
       return block(v);
     }
     const Eigen::Vector3d a = ground_position();

@@ -66,9 +66,9 @@ class RobotMotion {
   void next_waypoint();
   // A move or turn was refused: plan a manoeuvre to the waypoint (local_maneuver.h), once
   // per waypoint. True when one was found and is now under way.
-  bool start_maneuver();
+  bool start_maneuver(std::span<const ProxyBox> teammates);
   // Drives the manoeuvre's next pose within `budget` metres; returns the metres used.
-  double drive_maneuver(double budget);
+  double drive_maneuver(double budget, std::span<const ProxyBox> teammates);
   void remember(const Footprint& f);
 
   TerrainProbe probe_;

@@ -329,8 +329,8 @@ TEST(RobotMotion, WheeledRobotTurnsRoundInTheNarrowestOfficeRoom) {
 
 // office, seed 1: the SLUGCAT stood at the door of a room for 300 s (lockstep mission, from
 // 874 s on): every path out came to the door past a waypoint beside its jamb, the straight line
-// on clipped the jamb, and there was no room to turn there. It now manoeuvres out; a waypoint
-// no manoeuvre reaches (inside a wall) still leaves it BLOCKED, after one search.
+// on clipped the jamb, and there was no room to turn there. It now manoeuvres out; a teammate
+// in the way or a waypoint no manoeuvre reaches (inside a wall) still leaves it BLOCKED.
 TEST(RobotMotion, ABodyWedgedBesideADoorJambManoeuvresOut) {
   const auto layout = detail::office_layout(1);
   const auto scene = generate_scene("office", 1);
@@ -347,6 +347,17 @@ TEST(RobotMotion, ABodyWedgedBesideADoorJambManoeuvresOut) {
         << yaw_deg << ": " << to_string(robot.block_reason()) << " at " << robot.ground_position().transpose();
     EXPECT_GE(robot.maneuvers(), 1u) << yaw_deg;
   }
+  // A teammate standing in the doorway's way out: the manoeuvre keeps clear of its body (no
+  // contact), and the robot is blocked there instead.
+  ProxyBox mate;
+  mate.id = 7;
+  mate.center = Eigen::Vector3d(0.5 * (room.door.x0 + room.door.x1), wall_y + 0.9, 0.4);
+  mate.half_extents = core::builtin_mr1000().body_half_extents_m;
+  RobotMotion blocked(caster, core::builtin_slugcat(), inside, M_PI / 2);
+  blocked.follow({by_jamb, corridor, along});
+  for (double t = 0; t < 60 && blocked.state() == MotionState::kMoving; t += 0.05) blocked.step(0.05, {&mate, 1});
+  EXPECT_EQ(blocked.state(), MotionState::kBlocked);
+  EXPECT_EQ(blocked.collisions(), 0u);
   RobotMotion robot(caster, core::builtin_slugcat(), inside, M_PI / 2);
   const Eigen::Vector3d in_the_wall(room.door.x1 + 0.5, wall_y, 0);
   EXPECT_EQ(drive(robot, {by_jamb, in_the_wall}, 60), MotionState::kBlocked);
