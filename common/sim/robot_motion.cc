@@ -60,12 +60,8 @@ Eigen::Vector3d RobotMotion::ground_position() const {
 }
 
 ProxyBox RobotMotion::body_box() const {
-  const Eigen::Isometry3d p = body_pose();
-  ProxyBox b;
+  ProxyBox b = body_box_at(probe_, footprint_);
   b.id = id_;
-  b.center = p.translation();
-  b.orientation = Eigen::Quaterniond(p.linear());
-  b.half_extents = species().body_half_extents_m;
   return b;
 }
 
@@ -164,7 +160,6 @@ double RobotMotion::drive_maneuver(double budget, std::span<const ProxyBox> team
   } else if (const auto part = probe_.footprint(footprint_.xy + move * delta / dist, to.yaw, footprint_.heights)) {
     footprint_ = *part;  // within a move checked whole when it was planned
   } else {
-    maneuver_.clear();
     block(TerrainVerdict::kNoGround);
     return budget;
   }
