@@ -14,6 +14,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   curl python3
   python3-matplotlib  # figures of the planner comparison (tools/report/compare_report.py)
+  python3-zmq python3-protobuf  # the Python client (clients/python) and its tests (tests/client)
 )
 # Tools the rig and observability tests use (docker-compose validates without an engine).
 PACKAGES+=(prometheus docker-compose)
