@@ -25,6 +25,7 @@
 
 #include "tests/highlevel/synthetic_map.h"
 #include "tests/support/floyd_warshall.h"
+#include "tests/support/voxel_sample_wire.h"
 
 namespace hl = hexplore::highlevel;
 using Clock = std::chrono::steady_clock;

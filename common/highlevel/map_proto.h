@@ -14,7 +14,6 @@ namespace hexplore::highlevel {
 
 VoxelSample from_proto(const v1::Voxel& v);
 std::vector<VoxelSample> voxel_samples(const v1::VoxelDelta& delta);
-void to_proto(const VoxelSample& v, v1::Voxel* out);
 
 Supervoxel from_proto(const v1::Supervoxel& s);
 void to_proto(const Supervoxel& s, v1::Supervoxel* out);

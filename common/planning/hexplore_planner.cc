@@ -10,6 +10,7 @@
 #include <unordered_set>
 
 #include "common/core/clock.h"
+#include "common/planning/cluster_tour.h"
 #include "common/planning/clustering.h"
 #include "common/planning/cost_model.h"
 #include "common/planning/graph_tour.h"
@@ -87,33 +88,20 @@ std::string HexplorePlanner::name() const {
   return "hexplore";
 }
 
-void HexplorePlanner::configure(const PlannerContext& context) {
-  if (context.team.species.empty()) throw std::invalid_argument(name() + ": team has no species");
-  context_ = context;
-  configured_ = true;
-}
-
 PlanResult HexplorePlanner::plan(const PlanRequest& req) {
-  if (!configured_) throw std::logic_error(name() + ": plan() before configure()");
-  check_request(name(), req, context_.team);
-  const TeamCapabilities team = ablation_ == Ablation::kNoHetero ? context_.team.homogeneous() : context_.team;
-  if (ablation_ == Ablation::kNoAssign) return plan_voronoi(req, team);
+  const PlannerContext& context = checked(req);
+  const TeamCapabilities team = ablation_ == Ablation::kNoHetero ? context.team.homogeneous() : context.team;
+  if (ablation_ == Ablation::kNoAssign) return plan_voronoi(req, team, context.options);
 
-  const PlannerOptions& o = context_.options;
+  const PlannerOptions& o = context.options;
   StageClock clock(o);
-  PlanResult out;
-  out.round = req.round;
-  out.planner = name();
-  out.path_species = team.graph_species_of(req.robots[size_t(req.self)].species);
 
   // Task views, standing only where some robot can drive to.
   const highlevel::TopologyGraph& graph = req.map->graph();
   const RoundInputs in = prepare_round(req, team, o);
-  const MapContext& ctx = *in.context;
-  const auto& reach = in.reachable;
   const std::vector<TaskView>& views = in.views;
-  out.view_stats = in.stats;
-  out.views = int(views.size());
+  PlanResult out = start_result(req, in);
+  out.path_species = team.graph_species_of(req.robots[size_t(req.self)].species);
   out.times.views_s = clock.lap();
 
   // Clustering.
@@ -155,94 +143,43 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
   }
   out.times.assignment_s = clock.lap();
 
-  // Team solution: cluster sequences, lengths and costs.
-  std::unordered_map<uint64_t, std::string> ref_owner;
-  if (ref)
-    for (const auto& rr : ref->routes)
-      for (uint64_t id : rr.cluster_ids) ref_owner[id] = rr.robot_id;
-  int agree = 0, compared = 0;
-  out.robots.resize(req.robots.size());
-  for (size_t r = 0; r < req.robots.size(); ++r) {
-    RobotPlan& plan = out.robots[r];
-    plan.robot_id = req.robots[r].id;
-    const int k = req.robots[r].species;
-    int prev = inst.problem.depot(int(r));
-    for (int c : routes[r]) {
-      const TaskCluster& cl = clusters[size_t(inst.city_cluster[size_t(c)])];
-      plan.cluster_ids.push_back(cl.id);
-      plan.cluster_centers.push_back(cl.center);
-      const double w = inst.problem.travel_cost(k, prev, c);
-      plan.route_length_m += w * inst.speed[size_t(k)];
-      plan.cost_s += w + inst.problem.execution_cost(k, c);
-      if (cl.label != kPublic) plan.private_cost_s += w + inst.problem.execution_cost(k, c);
-      prev = c;
-      if (const auto it = ref_owner.find(cl.id); it != ref_owner.end()) {
-        ++compared;
-        agree += it->second == plan.robot_id ? 1 : 0;
-      }
-    }
-  }
-  if (compared > 0) out.agreement = double(agree) / compared;
+  // Team solution: cluster sequences, lengths and costs, and how far it agrees with the reference.
+  out.robots = cluster_plans(inst, clusters, req.robots, routes);
+  if (ref) out.agreement = reference_agreement(*ref, out.robots);
 
-  // Exploration tour of the planning robot.
+  // Exploration tour of the planning robot: MNSS's views of each cluster (every view without
+  // MNSS, the first without clustering), in graph order.
   const size_t self = size_t(req.self);
   const RobotState& me = req.robots[self];
   const SpeciesCapability& my_species = team.species[size_t(me.species)];
   Rng rng(shared_seed(mix_seed(o.seed, 0x4d4e5353), city_ids));
+  const ClusterViews views_of = [&](const TaskCluster& cl, const Eigen::Vector3d& start,
+                                    const std::optional<Eigen::Vector3d>& end) -> std::vector<TaskView> {
+    if (ablation_ == Ablation::kNoCluster) return {views[size_t(cl.views.front())]};
+    if (ablation_ == Ablation::kNoMnss) return every_view(views, cl, start, end);
+    // MNSS picks the set with Euclidean costs (too many candidates for a Dijkstra each).
+    return mnss_tour(*in.context, views, cl.views, {cl.center}, o.eta_r_m, my_species, start, end, o, rng, nullptr,
+                     &in.reachable[size_t(me.species)]);
+  };
   std::vector<TaskView>& tour = out.robots[self].route;
-  const Route& mine = routes[self];
-  // Each cluster's views are visited in graph order (paper eq. 4-xx-delta: a cluster costs its
-  // graph distances), from where the previous cluster's views end towards the next cluster's
-  // anchor. MNSS picks the set with Euclidean costs (too many candidates for a Dijkstra each);
-  // ordering the picked views on the graph keeps a route from crossing a wall back and forth
-  // between a building's inside and outside (README, "Views in graph order").
-  const int my_graph_species = team.graph_species_of(me.species);
-  std::optional<uint64_t> at_vertex = in.robot_vertices[self];
-  for (size_t i = 0; i < mine.size(); ++i) {
-    const TaskCluster& cl = clusters[size_t(inst.city_cluster[size_t(mine[i])])];
-    const Eigen::Vector3d start = i == 0 ? me.position : clusters[size_t(inst.city_cluster[size_t(mine[i - 1])])].center;
-    std::optional<Eigen::Vector3d> end;
-    if (i + 1 < mine.size()) end = clusters[size_t(inst.city_cluster[size_t(mine[i + 1])])].center;
-    std::vector<TaskView> part;
-    if (ablation_ == Ablation::kNoCluster) {
-      part = {views[size_t(cl.views.front())]};
-    } else if (ablation_ == Ablation::kNoMnss) {
-      std::vector<TaskView> all;
-      for (int v : cl.views) all.push_back(views[size_t(v)]);
-      part = order_views(std::move(all), start, end);
-    } else {
-      part = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, my_species, start, end, o, rng, nullptr,
-                       &reach[size_t(me.species)]);
-    }
-    if (at_vertex && part.size() > 1) {
-      std::optional<uint64_t> next_anchor;
-      if (i + 1 < mine.size())
-        if (const uint64_t a = inst.anchor[size_t(inst.city_cluster[size_t(mine[i + 1])])][size_t(me.species)]) next_anchor = a;
-      part = order_views_on_graph(graph, *at_vertex, part, my_graph_species, next_anchor);
-    }
-    if (!part.empty()) at_vertex = part.back().ground_key;
-    tour.insert(tour.end(), part.begin(), part.end());
-  }
-  if (ablation_ != Ablation::kNoMnss) tour = prune_route(ctx, std::move(tour), my_species, o);
+  tour = cluster_tour(graph, inst, clusters, routes[self], me, team.graph_species_of(me.species),
+                      in.robot_vertices[self], views_of);
+  if (ablation_ != Ablation::kNoMnss) tour = prune_route(*in.context, std::move(tour), my_species, o);
   out.times.mnss_s = clock.lap();
   out.times.total_s = clock.total();
   return out;
 }
 
-PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapabilities& team) {
-  const PlannerOptions& o = context_.options;
+PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapabilities& team,
+                                         const PlannerOptions& o) const {
   StageClock clock(o);
-  PlanResult out;
-  out.round = req.round;
-  out.planner = name();
-  out.path_species = team.graph_species_of(req.robots[size_t(req.self)].species);
   const highlevel::TopologyGraph& graph = req.map->graph();
   const RoundInputs in = prepare_round(req, team, o);
   const MapContext& ctx = *in.context;
   const auto& reach = in.reachable;
   const std::vector<TaskView>& views = in.views;
-  out.view_stats = in.stats;
-  out.views = int(views.size());
+  PlanResult out = start_result(req, in);
+  out.path_species = team.graph_species_of(req.robots[size_t(req.self)].species);
   out.times.views_s = clock.lap();
 
   // Dynamic Voronoi partition: each view goes to the nearest (graph distance) robot whose

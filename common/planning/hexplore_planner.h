@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "common/planning/planner.h"
+#include "common/planning/planner_base.h"
 
 namespace hexplore::planning {
 
@@ -16,18 +16,15 @@ enum class Ablation {
   kNoAssign,   // Voronoi partition of views by graph distance, MNSS kept, no clustering / GA
 };
 
-class HexplorePlanner : public Planner {
+class HexplorePlanner : public ConfiguredPlanner {
  public:
   explicit HexplorePlanner(Ablation ablation = Ablation::kNone) : ablation_(ablation) {}
   std::string name() const override;
-  void configure(const PlannerContext& context) override;
   PlanResult plan(const PlanRequest& request) override;
 
  private:
-  PlanResult plan_voronoi(const PlanRequest& request, const TeamCapabilities& team);
+  PlanResult plan_voronoi(const PlanRequest& request, const TeamCapabilities& team, const PlannerOptions& options) const;
   Ablation ablation_;
-  PlannerContext context_;
-  bool configured_ = false;
 };
 
 }  // namespace hexplore::planning

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "common/planning/cluster_tour.h"
 #include "common/planning/clustering.h"
 #include "common/planning/cost_model.h"
-#include "common/planning/mnss.h"
 #include "common/planning/round_inputs.h"
 #include "common/planning/utility_greedy.h"
 
@@ -43,39 +43,18 @@ PlanResult TspgaPlanner::plan(const PlanRequest& req) {
   if (inst.problem.num_cities > 0) routes = greedy_allocation(inst.problem, gain, lambda);
   out.times.assignment_s = clock.lap();
 
-  out.robots.resize(req.robots.size());
-  for (size_t r = 0; r < req.robots.size(); ++r) {
-    RobotPlan& plan = out.robots[r];
-    plan.robot_id = req.robots[r].id;
-    const int k = req.robots[r].species;
-    int prev = inst.problem.depot(int(r));
-    for (int c : routes[r]) {
-      const TaskCluster& cl = clusters[size_t(inst.city_cluster[size_t(c)])];
-      plan.cluster_ids.push_back(cl.id);
-      plan.cluster_centers.push_back(cl.center);
-      const double w = inst.problem.travel_cost(k, prev, c);
-      plan.route_length_m += w * inst.speed[size_t(k)];
-      plan.cost_s += w + inst.problem.execution_cost(k, c);
-      prev = c;
-    }
+  out.robots = cluster_plans(inst, clusters, req.robots, routes);
+  for (size_t r = 0; r < req.robots.size(); ++r)
     out.fitness += route_utility(inst.problem, int(r), routes[r], gain, lambda);
-  }
 
-  // The planning robot visits every view of its clusters in order, between the previous and
-  // the next cluster centre (the no-mnss tour).
+  // The planning robot visits every view of its clusters (the no-mnss tour: Euclidean order
+  // between the previous and the next cluster centre, then graph order, as hexplore's).
   const size_t self = size_t(req.self);
-  const Route& mine = routes[self];
-  for (size_t i = 0; i < mine.size(); ++i) {
-    const TaskCluster& cl = clusters[size_t(inst.city_cluster[size_t(mine[i])])];
-    const Eigen::Vector3d start =
-        i == 0 ? req.robots[self].position : clusters[size_t(inst.city_cluster[size_t(mine[i - 1])])].center;
-    std::optional<Eigen::Vector3d> end;
-    if (i + 1 < mine.size()) end = clusters[size_t(inst.city_cluster[size_t(mine[i + 1])])].center;
-    std::vector<TaskView> all;
-    for (int v : cl.views) all.push_back(views[size_t(v)]);
-    const std::vector<TaskView> part = order_views(std::move(all), start, end);
-    out.robots[self].route.insert(out.robots[self].route.end(), part.begin(), part.end());
-  }
+  const RobotState& me = req.robots[self];
+  const ClusterViews every = [&](const TaskCluster& cl, const Eigen::Vector3d& start,
+                                 const std::optional<Eigen::Vector3d>& end) { return every_view(views, cl, start, end); };
+  out.robots[self].route = cluster_tour(graph, inst, clusters, routes[self], me, team.graph_species_of(me.species),
+                                        in.robot_vertices[self], every);
   out.times.mnss_s = clock.lap();
   out.times.total_s = clock.total();
   return out;

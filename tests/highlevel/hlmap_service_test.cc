@@ -29,6 +29,7 @@
 #include "hexplore/v1/status.pb.h"
 #include "tests/highlevel/synthetic_map.h"
 #include "tests/support/scratch_dir.h"
+#include "tests/support/voxel_sample_wire.h"
 #include "tests/transport/child_process.h"
 
 namespace hexplore::highlevel {
