@@ -10,6 +10,7 @@
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
 #include "common/core/log.h"
+#include "common/highlevel/graph_export.h"
 #include "common/highlevel/map_proto.h"
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/executable_path.h"
@@ -62,6 +63,8 @@ void PlanningService::setup(service::ServiceContext& context) {
     std::filesystem::create_directories(dir, ignored);
     trace_.open(path);
     if (!trace_) throw service::OptionError("trace-dir", "cannot write " + path);
+    trace_dir_ = dir;
+    trace_graph_period_s_ = opts.number("trace-graph-period-s", 0.0, 0.0);
   }
   mission_ = service::MissionState(opts.flag("wait-for-start", false));
   const double cycle_ms = opts.positive("cycle-ms", 200.0);
@@ -410,6 +413,13 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
   round.judged = follower_->take_judgements();
   trace_ << planning::round_trace_json(round, req, res, follower_->counters(), *map_, options_.region);
   trace_.flush();
+  if (trace_graph_period_s_ > 0.0 && round.t_s - graph_traced_s_ >= trace_graph_period_s_) {
+    graph_traced_s_ = round.t_s;
+    const std::string path = trace_dir_ + "/graph-" + robot_id_ + "-" + std::to_string(int64_t(round.t_s)) + ".ply";
+    std::ofstream graph(path);
+    highlevel::write_graph_ply(map_->graph(), graph);
+    if (!graph) core::log_once(core::LogLevel::kWarn, "planning", "graph-trace", "cannot write the graph trace " + path);
+  }
 }
 
 v1::OpenTargetsReport PlanningService::open_targets_report() const {

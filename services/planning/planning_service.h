@@ -50,7 +50,8 @@ class PlanningService : public service::Service {
   // --peer-timeout-s X (default params.liveness.planning_team_s), --peer-stuck-s X (default 30.0); the
   // follower's --reach-m X (1.0), --blocked-s X (2.0), --stuck-s X (8.0), --settle-s X (2.0),
   // --keep-stretch-m X (5.0; under --reach-m keeps only the leg), --observe true|false (dwell at facade views, default true); the ledger's
-  // --give-up-views N (1) and --give-up-attempts N (3); --trace-dir DIR (per-round traces).
+  // --give-up-views N (1) and --give-up-attempts N (3); --trace-dir DIR (per-round traces) and
+  // --trace-graph-period-s S (with it: the topology graph as graph-<robot>-<t>.ply every S s; 0 off).
   void setup(service::ServiceContext& context) override;
   void fill_status(v1::ServiceStatus& status) override;
 
@@ -112,7 +113,10 @@ class PlanningService : public service::Service {
   int own_motion_ = 0;                                // our last v1::MotionState
   int64_t sim_time_ns_ = 0;
   double odometry_m_ = 0.0;                           // distance driven, from our driver
-  std::ofstream trace_;                           // latest sim time from our pose
+  std::ofstream trace_;                           // per-round traces (--trace-dir)
+  std::string trace_dir_;
+  double trace_graph_period_s_ = 0.0;             // how often the graph goes into the traces (0: never)
+  double graph_traced_s_ = -1e300;                // when it last did
   int64_t last_plan_sim_ns_ = 0;
 
   service::MissionState mission_;  // the station starts and stops our rounds

@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <random>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "common/highlevel/graph_export.h"
 #include "common/highlevel/high_level_map.h"
 #include "common/highlevel/segmenter.h"
 
@@ -188,6 +190,24 @@ TEST(TopologyGraph, RealMapGraphMatchesFloydWarshall) {
   EXPECT_LT(g.dist(*outside, *indoor, 1), 40.0);
   EXPECT_TRUE(std::isinf(g.dist(*outside, *indoor, 0)));
   EXPECT_TRUE(std::isinf(g.dist(*outside, *upstairs, 1)));
+}
+
+TEST(GraphExport, PlyHoldsEveryVertexWithItsRequirementAndEveryEdgeOnce) {
+  TopologyGraph g({1, 2});
+  g.upsert_vertex(30, {0, 0, 0}, 1);
+  g.upsert_vertex(10, {1, 0, 0.5}, 2);
+  g.upsert_vertex(20, {2, 0, 1}, 1);
+  g.upsert_edge(30, 10, 1.1);
+  g.upsert_edge(10, 20, 1.1);
+  g.set_clearance(20, 0.75, {});
+  std::ostringstream out;
+  write_graph_ply(g, out);
+  const std::string ply = out.str();
+  EXPECT_NE(ply.find("element vertex 3\n"), std::string::npos) << ply;
+  EXPECT_NE(ply.find("element edge 2\n"), std::string::npos) << ply;
+  // Rows in key order: 10, 20, 30; edges 10-20 and 10-30 as rows 0-1 and 0-2.
+  const std::string body = ply.substr(ply.find("end_header\n") + 11);
+  EXPECT_EQ(body, "1 0 0.5 2 -1\n2 0 1 1 0.75\n0 0 0 1 -1\n0 1\n0 2\n");
 }
 
 }  // namespace
