@@ -114,7 +114,63 @@ SpeciesConfig builtin_mr1000() {
   return s;
 }
 
+// A legged robot of the ANYmal class, between the paper's two species in every terrain limit
+// so that the traversal levels still rank what each crosses (MR1000 1 < QUADRUPED 2 <
+// SLUGCAT, which a team with both must raise to 3: validate() refuses two species of one
+// level with different limits). It walks stairs (0.20 m steps, 30 deg) but not the rubble and
+// high debris the tracked SLUGCAT crawls over, and needs more headroom than the SLUGCAT and
+// less than the MR1000; it walks fastest of the three (0.6 m/s). Its map joins the floors of a
+// flight of 0.15 m risers (the campus scene's), not of the older scenes' 0.175 m ones, though
+// its body climbs both. One rotating 32-line LiDAR on its trunk sees all round to mid range:
+// observation range 20 m, between SLUGCAT's 10 m and MR1000's 27 m, and 2 s per facade view
+// (32 lines lay down points far more slowly than SLUGCAT's panoramic set).
+SpeciesConfig builtin_quadruped() {
+  SpeciesConfig s;
+  s.name = "QUADRUPED";
+  s.traversal_level = 2;
+  s.max_slope_deg = 30.0;
+  s.max_step_m = 0.20;
+  s.max_roughness_m = 0.08;
+  s.min_clearance_m = 0.70;
+  s.max_sparsity = 0.93;
+  s.speed_mps = 0.6;
+  s.observation_speed_views_per_s = 0.5;
+  s.observation_range_m = 20.0;
+  s.body_half_extents_m = {0.40, 0.28, 0.30};  // 0.80 x 0.56 m trunk and legs, 0.6 m tall
+  LidarConfig rotating;
+  rotating.name = "rotating";
+  rotating.lines = 32;
+  // 90 deg of vertical field, as an Ouster OS0-32: with +-22.5 deg its map of a flight it
+  // climbed never joined the floors (it sees too little of the treads ahead of its feet).
+  rotating.vertical_min_deg = -45.0;
+  rotating.vertical_max_deg = 45.0;
+  rotating.horizontal_min_deg = -180.0;
+  rotating.horizontal_max_deg = 180.0;
+  rotating.horizontal_step_deg = 0.35;  // 1,029 columns x 32 lines = 32,928 rays
+  rotating.max_range_m = 50.0;
+  rotating.mount_offset_m = {0.1, 0.0, 0.35};  // on top of the trunk, 0.65 m above the ground
+  // A rotating LiDAR repeats its pattern, but a legged robot's trunk is never still (gait,
+  // balance), so its lines fall elsewhere every frame; the shifted pattern stands in for that.
+  rotating.non_repetitive = true;
+  s.lidars.push_back(rotating);
+  return s;
+}
+
+std::vector<std::string> builtin_species_names() { return {"SLUGCAT", "MR1000", "QUADRUPED"}; }
+
+std::optional<SpeciesConfig> builtin_species(const std::string& name) {
+  if (name == "SLUGCAT") return builtin_slugcat();
+  if (name == "MR1000") return builtin_mr1000();
+  if (name == "QUADRUPED") return builtin_quadruped();
+  return std::nullopt;
+}
+
 namespace {
+
+bool same_terrain_limits(const SpeciesConfig& a, const SpeciesConfig& b) {
+  return a.max_slope_deg == b.max_slope_deg && a.max_step_m == b.max_step_m && a.max_roughness_m == b.max_roughness_m &&
+         a.min_clearance_m == b.min_clearance_m && a.max_sparsity == b.max_sparsity;
+}
 
 void require(bool ok, const TeamConfig& c, const std::string& key, const std::string& problem) {
   if (!ok) throw ConfigError(c.source_file, key, problem);
@@ -135,6 +191,15 @@ void validate(const TeamConfig& c) {
     require(!s.name.empty(), c, key + ".name", "must not be empty");
     require(names.insert(s.name).second, c, key + ".name", "duplicate species '" + s.name + "'");
     require(s.traversal_level >= 1, c, key + ".traversal_level", "must be >= 1");
+    // A ground cell's requirement is the lowest level of the species that may cross it, and
+    // every species of that level or above is sent across: two species of one level must
+    // cross the same ground.
+    for (size_t j = 0; j < i; ++j)
+      require(c.species[j].traversal_level != s.traversal_level || same_terrain_limits(c.species[j], s), c,
+              key + ".traversal_level",
+              "species '" + s.name + "' and '" + c.species[j].name + "' share traversal level " +
+                  std::to_string(s.traversal_level) +
+                  " but not their terrain limits; give the one that crosses more a higher level");
     require(s.speed_mps > 0 && std::isfinite(s.speed_mps), c, key + ".speed_mps", "must be a positive number");
     require(s.observation_speed_views_per_s > 0, c, key + ".observation_speed_views_per_s", "must be > 0");
     require(s.observation_range_m > 0, c, key + ".observation_range_m", "must be > 0");

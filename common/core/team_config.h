@@ -211,8 +211,13 @@ TeamConfig parse_team_config(const std::string& yaml_text, const std::string& or
 // Checks cross-references and ranges; throws ConfigError.
 void validate(const TeamConfig& config);
 
-// The paper's two species, as built-in templates a team file can refer to by name.
+// The paper's two species and a legged third, as built-in templates a team file can refer
+// to by name (`builtin: NAME`).
 SpeciesConfig builtin_slugcat();
 SpeciesConfig builtin_mr1000();
+SpeciesConfig builtin_quadruped();
+// The built-in names, and the template of one; nullopt for another name.
+std::vector<std::string> builtin_species_names();
+std::optional<SpeciesConfig> builtin_species(const std::string& name);
 
 }  // namespace hexplore::core

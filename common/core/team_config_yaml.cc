@@ -112,9 +112,15 @@ SpeciesConfig read_species(const Reader& r, const YAML::Node& n, const std::stri
   SpeciesConfig s;
   std::string builtin;
   r.read(n, path, "builtin", builtin);
-  if (builtin == "SLUGCAT") s = builtin_slugcat();
-  else if (builtin == "MR1000") s = builtin_mr1000();
-  else if (!builtin.empty()) r.fail(n["builtin"], path + ".builtin", "unknown built-in species '" + builtin + "' (known: SLUGCAT, MR1000)");
+  if (!builtin.empty()) {
+    const auto known = builtin_species(builtin);
+    if (!known) {
+      std::string names;
+      for (const auto& name : builtin_species_names()) names += (names.empty() ? "" : ", ") + name;
+      r.fail(n["builtin"], path + ".builtin", "unknown built-in species '" + builtin + "' (known: " + names + ")");
+    }
+    s = *known;
+  }
   r.read(n, path, "name", s.name);
   r.read(n, path, "traversal_level", s.traversal_level);
   r.read(n, path, "max_slope_deg", s.max_slope_deg);

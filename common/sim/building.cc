@@ -130,7 +130,7 @@ void add_building(MeshBuilder& b, const BuildingSpec& s) {
     for (int floor = 0; floor < s.floors; ++floor) {
       std::vector<Opening> openings = windows_for(s, length, floor == 0 ? doors : std::vector<Opening>{});
       if (floor == 0) openings.insert(openings.end(), doors.begin(), doors.end());
-      add_wall(b, line.a, line.e, t, floor * s.floor_height_m, s.floor_height_m, openings);
+      add_wall(b, line.a, line.e, t, s.base_z_m + floor * s.floor_height_m, s.floor_height_m, openings);
     }
   }
   const Rect inner{f.x0 + t, f.y0 + t, f.x1 - t, f.y1 - t};
@@ -139,7 +139,7 @@ void add_building(MeshBuilder& b, const BuildingSpec& s) {
     const std::vector<Rect> holes =
         (level < s.floors && level - 1 < static_cast<int>(s.slab_holes.size())) ? s.slab_holes[level - 1]
                                                                                : std::vector<Rect>{};
-    const double top = level * s.floor_height_m;
+    const double top = s.base_z_m + level * s.floor_height_m;
     add_slab(b, inner, top - s.slab_m, top, holes);
   }
 }

@@ -31,7 +31,7 @@ void add_slab(MeshBuilder& b, const Rect& outline, double z_bottom, double z_top
 enum class Side { kSouth, kNorth, kWest, kEast };
 
 // A multi-floor shell: exterior walls (doors on the ground floor, windows on every floor),
-// one slab per upper floor and a roof. Floor k's walking surface is at z = k * floor_height.
+// one slab per upper floor and a roof. Floor k's walking surface is at z = base_z + k * floor_height.
 struct BuildingSpec {
   struct Door {
     Side side = Side::kSouth;
@@ -40,6 +40,7 @@ struct BuildingSpec {
     double height_m = 2.2;
   };
   Rect footprint;
+  double base_z_m = 0.0;  // ground floor level (above 0 for a building on a plinth)
   int floors = 1;
   double floor_height_m = 3.5;
   double wall_m = 0.25;

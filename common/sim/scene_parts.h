@@ -55,11 +55,25 @@ struct OfficeLayout {
 };
 OfficeLayout office_layout(uint64_t seed);
 
+// The campus scene's buildings (the same for every seed; rooms, room doors and clutter
+// follow it) and its climbs: every flight between storeys, the parking deck's ramp and the
+// lab's plinth steps (tests check levels and who climbs what against them).
+struct CampusBuilding {
+  std::string name;
+  Rect footprint;
+  double base_z = 0.0;    // ground-floor level (the lab stands on a plinth)
+  int floors = 1;         // walkable levels inside (the parking deck: ground and roof deck)
+  double storey_m = 0.0;  // floor k at base_z + k * storey_m
+};
+std::vector<CampusBuilding> campus_buildings();
+std::vector<Climb> campus_climbs();
+
 SceneInfo make_single_building(uint64_t seed);
 SceneInfo make_small_building(uint64_t seed);
 SceneInfo make_multi_building(uint64_t seed);
 SceneInfo make_corridor_stairs(uint64_t seed);
 SceneInfo make_office(uint64_t seed);
 SceneInfo make_multi_storey(uint64_t seed);
+SceneInfo make_campus(uint64_t seed);
 
 }  // namespace hexplore::sim::detail

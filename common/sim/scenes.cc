@@ -9,7 +9,8 @@
 namespace hexplore::sim {
 
 std::vector<std::string> scene_names() {
-  return {"single-building", "small-building", "multi-building", "corridor-stairs", "office", "multi-storey"};
+  return {"single-building", "small-building", "multi-building", "corridor-stairs", "office", "multi-storey",
+          "campus"};
 }
 
 bool is_builtin_scene(const std::string& name) {
@@ -25,6 +26,7 @@ SceneInfo generate_scene(const std::string& name, uint64_t seed) {
   if (name == "corridor-stairs") return detail::make_corridor_stairs(seed);
   if (name == "office") return detail::make_office(seed);
   if (name == "multi-storey") return detail::make_multi_storey(seed);
+  if (name == "campus") return detail::make_campus(seed);
   std::string known;
   for (const auto& n : scene_names()) known += (known.empty() ? "" : ", ") + n;
   throw SceneError(name, "unknown scene; built-in scenes are " + known + " (or give a mesh file path)");

@@ -23,7 +23,7 @@ struct SceneInfo {
 };
 
 // Names of the built-in scenes: single-building, small-building, multi-building, corridor-stairs, office,
-// multi-storey.
+// multi-storey, campus.
 std::vector<std::string> scene_names();
 bool is_builtin_scene(const std::string& name);
 

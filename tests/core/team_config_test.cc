@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "common/core/config_error.h"
 #include "common/core/liveness.h"
@@ -44,6 +46,65 @@ TEST(TeamConfig, ObservationLevelsRankByRange) {
   EXPECT_EQ(c.observation_level(*c.find_species("MR1000")), 2);
 }
 
+// The legged third built-in: loads by name, mid-range 360 deg LiDAR, and terrain limits between
+// the wheeled and the tracked species' in every respect, so that traversal levels can rank the
+// three (MR1000 1 < QUADRUPED 2 < SLUGCAT).
+TEST(TeamConfig, QuadrupedIsABuiltinBetweenTheOtherTwo) {
+  const auto c = parse_team_config("species: [{builtin: QUADRUPED}]\nrobots: [{id: q, species: QUADRUPED}]\n", "test");
+  const auto* q = c.find_species("QUADRUPED");
+  ASSERT_NE(q, nullptr);
+  EXPECT_EQ(q->traversal_level, 2);
+  EXPECT_DOUBLE_EQ(q->speed_mps, 0.6);
+  EXPECT_DOUBLE_EQ(q->observation_range_m, 20.0);
+  ASSERT_EQ(q->lidars.size(), 1u);
+  EXPECT_EQ(q->lidars[0].lines, 32);
+  EXPECT_DOUBLE_EQ(q->lidars[0].horizontal_max_deg - q->lidars[0].horizontal_min_deg, 360.0);
+  const auto mr = builtin_mr1000(), slug = builtin_slugcat();
+  EXPECT_GT(q->max_slope_deg, mr.max_slope_deg);
+  EXPECT_LT(q->max_slope_deg, slug.max_slope_deg);
+  EXPECT_GT(q->max_step_m, mr.max_step_m);
+  EXPECT_LT(q->max_step_m, slug.max_step_m);
+  EXPECT_GT(q->max_roughness_m, mr.max_roughness_m);
+  EXPECT_LT(q->max_roughness_m, slug.max_roughness_m);
+  EXPECT_GT(q->max_sparsity, mr.max_sparsity);
+  EXPECT_LT(q->max_sparsity, slug.max_sparsity);
+  EXPECT_LT(q->min_clearance_m, mr.min_clearance_m);
+  EXPECT_GT(q->min_clearance_m, slug.min_clearance_m);
+  EXPECT_EQ(builtin_species_names().size(), 3u);
+  for (const auto& name : builtin_species_names()) EXPECT_EQ(builtin_species(name)->name, name);
+  EXPECT_FALSE(builtin_species("WALKER"));
+}
+
+// Three species: observation levels rank the three ranges, and the SLUGCAT is raised above the
+// quadruped's traversal level as the campus team files do.
+TEST(TeamConfig, ThreeSpeciesRankByRangeAndByLevel) {
+  const auto c = parse_team_config(
+      "species:\n  - {builtin: SLUGCAT, traversal_level: 3}\n  - builtin: QUADRUPED\n  - builtin: MR1000\n"
+      "robots: [{id: a, species: SLUGCAT}, {id: b, species: QUADRUPED}, {id: c, species: MR1000}]\n",
+      "test");
+  EXPECT_EQ(c.observation_level(*c.find_species("SLUGCAT")), 1);
+  EXPECT_EQ(c.observation_level(*c.find_species("QUADRUPED")), 2);
+  EXPECT_EQ(c.observation_level(*c.find_species("MR1000")), 3);
+  EXPECT_EQ(c.find_species("SLUGCAT")->traversal_level, 3);
+  EXPECT_EQ(c.find_species("QUADRUPED")->traversal_level, 2);
+  EXPECT_EQ(c.find_species("MR1000")->traversal_level, 1);
+}
+
+// Both campus team files load and validate: 8 and 16 robots of the three species.
+TEST(TeamConfig, CampusTeamFilesLoad) {
+  for (const auto& [file, robots] : {std::pair<std::string, size_t>{"campus-8.yaml", 8}, {"campus-16.yaml", 16}}) {
+    const auto c = load_team_config(std::string(HEXPLORE_SOURCE_DIR) + "/deploy/teams/" + file);
+    EXPECT_EQ(c.scene, "campus") << file;
+    EXPECT_EQ(c.robots.size(), robots) << file;
+    ASSERT_EQ(c.species.size(), 3u) << file;
+    for (const auto& s : c.species) {
+      size_t n = 0;
+      for (const auto& r : c.robots) n += r.species == s.name;
+      EXPECT_GE(n, 2u) << file << " " << s.name;
+    }
+  }
+}
+
 void expect_error(const std::string& yaml, const std::string& key, const std::string& problem_part, int line = -1) {
   try {
     parse_team_config(yaml, "team.yaml");
@@ -62,6 +123,22 @@ void expect_error(const std::string& yaml, const std::string& key, const std::st
 TEST(TeamConfig, UnknownSpeciesIsNamed) {
   expect_error("species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: WALKER}]\n", "robots[0].species",
                "unknown species 'WALKER'");
+}
+
+TEST(TeamConfig, UnknownBuiltinSpeciesListsTheKnownOnes) {
+  expect_error("species: [{builtin: WALKER}]\nrobots: [{id: a, species: WALKER}]\n", "species[0].builtin",
+               "known: SLUGCAT, MR1000, QUADRUPED");
+}
+
+// A requirement level sends every species of that level across: two species of one level
+// must cross the same ground (SLUGCAT and QUADRUPED are both level 2 unless the file says).
+TEST(TeamConfig, SpeciesOfOneLevelWithDifferentLimitsAreRejected) {
+  expect_error("species: [{builtin: SLUGCAT}, {builtin: QUADRUPED}]\nrobots: [{id: a, species: SLUGCAT}]\n",
+               "species[1].traversal_level", "share traversal level 2");
+  EXPECT_NO_THROW(parse_team_config(
+      "species: [{builtin: SLUGCAT}, {name: SLUG2, builtin: SLUGCAT, speed_mps: 0.3}]\n"
+      "robots: [{id: a, species: SLUG2}]\n",
+      "team.yaml"));
 }
 
 TEST(TeamConfig, TypoKeyIsRejectedWithLine) {

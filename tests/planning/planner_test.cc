@@ -45,6 +45,43 @@ TEST(Labels, MatchingReadsRequirementAtMostCapability) {
   EXPECT_EQ(task_label(2, 1, three, 10, 1), 1);  // MR1000 (score 12) beats heavy (32)
 }
 
+// The three built-in species as the campus team files give them (SLUGCAT raised to traversal
+// level 3 above the QUADRUPED's 2): requirements, labels and the NoHetero flattening rank them.
+TEST(Labels, ThreeBuiltinSpeciesGiveTheWeakestMatchingOneItsViews) {
+  core::TeamConfig team;
+  core::SpeciesConfig slugcat = core::builtin_slugcat();
+  slugcat.traversal_level = 3;
+  team.species = {slugcat, core::builtin_quadruped(), core::builtin_mr1000()};
+  team.robots = {{"s", "SLUGCAT", {0, 0, 0}, 0}, {"q", "QUADRUPED", {2, 0, 0}, 0}, {"m", "MR1000", {4, 0, 0}, 0}};
+  ASSERT_NO_THROW(core::validate(team));
+  const TeamCapabilities caps = capabilities_from(team);
+  // Traversal 3 / 2 / 1; observation by range, 10 / 20 / 27 m: 1 / 2 / 3.
+  EXPECT_EQ(highlevel::species_levels(team), (std::vector<int>{3, 2, 1}));
+  EXPECT_EQ(caps.species[0].observation_level, 1);
+  EXPECT_EQ(caps.species[1].observation_level, 2);
+  EXPECT_EQ(caps.species[2].observation_level, 3);
+  // Ground low-risk for the climbers only (stairs) needs level 2, for the SLUGCAT only (masonry) 3.
+  EXPECT_EQ(highlevel::traversal_requirement(0b011u, highlevel::species_levels(team)), 2);
+  EXPECT_EQ(highlevel::traversal_requirement(0b001u, highlevel::species_levels(team)), 3);
+  EXPECT_EQ(highlevel::traversal_requirement(0b111u, highlevel::species_levels(team)), 1);
+  EXPECT_EQ(task_label(1, 1, caps, 10, 1), kPublic);
+  EXPECT_EQ(task_label(1, 2, caps, 10, 1), 1);  // upstairs: the QUADRUPED before the SLUGCAT
+  EXPECT_EQ(task_label(1, 3, caps, 10, 1), 0);  // behind the masonry: the SLUGCAT only
+  EXPECT_EQ(task_label(2, 1, caps, 10, 1), 2);  // 10-20 m: the MR1000 (score 13) before the QUADRUPED (22)
+  EXPECT_EQ(task_label(3, 1, caps, 10, 1), 2);  // beyond 20 m: the MR1000 only
+  EXPECT_EQ(task_label(2, 2, caps, 10, 1), 1);
+  EXPECT_EQ(task_label(2, 3, caps, 10, 1), kUnassignable);
+  EXPECT_EQ(observation_requirement(5.0, caps), 1);
+  EXPECT_EQ(observation_requirement(15.0, caps), 2);
+  EXPECT_EQ(observation_requirement(25.0, caps), 3);
+  EXPECT_EQ(observation_requirement(30.0, caps), 0);
+  const TeamCapabilities flat = caps.homogeneous();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(flat.species[size_t(k)].traversal_level, 1);
+    EXPECT_EQ(flat.graph_species_of(k), 2);  // the MR1000's terrain for everyone
+  }
+}
+
 TEST(TaskViews, FacadeViewsAreVisibleAndRespectRequirements) {
   Fixture f;
   const MapContext ctx(f.map, f.options);

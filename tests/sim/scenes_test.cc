@@ -36,8 +36,8 @@ TEST(Scenes, DoorsTooSmallForTheRobotsAreRejected) {
   EXPECT_THROW(add_building(b, spec), SceneError);
   spec.doors = {{Side::kSouth, 2.0, kMinDoorWidthM, kMinDoorHeightM}};
   EXPECT_NO_THROW(add_building(b, spec));
-  // Robots fit: both species are narrower and lower than the smallest door.
-  for (const auto& species : {core::builtin_slugcat(), core::builtin_mr1000()}) {
+  // Robots fit: every built-in species is narrower and lower than the smallest door.
+  for (const auto& species : {core::builtin_slugcat(), core::builtin_mr1000(), core::builtin_quadruped()}) {
     EXPECT_LT(2 * species.body_half_extents_m.y() + 0.3, kMinDoorWidthM) << species.name;
     EXPECT_LT(species.min_clearance_m, kMinDoorHeightM) << species.name;
   }
@@ -72,12 +72,12 @@ TEST(Scenes, SizesMatchThePaper) {
 }
 
 // Every suggested start (the default team's (2,-3) and (4,-3) among them) is flat, free
-// ground where both species can stand and drive a metre.
+// ground where every built-in species can stand and drive a metre.
 TEST(Scenes, SuggestedStartsAreFreeFlatGround) {
   for (const auto& name : scene_names()) {
     const auto scene = generate_scene(name, 1);
     const RayCaster caster(scene.mesh);
-    for (const auto& species : {core::builtin_slugcat(), core::builtin_mr1000()})
+    for (const auto& species : {core::builtin_slugcat(), core::builtin_mr1000(), core::builtin_quadruped()})
       for (const auto& s : scene.suggested_starts) {
         RobotMotion robot(caster, species, s, M_PI / 2);
         EXPECT_NEAR(robot.ground_position().z(), 0.0, 1e-3) << name;
@@ -273,6 +273,98 @@ TEST(Scenes, MultiStoreyUpperLevelsNeedTheTrackedRobot) {
   EXPECT_GT(wheeled[0], 1000u);
   EXPECT_EQ(wheeled[1], 0u);
   EXPECT_EQ(wheeled[2], 0u);
+}
+
+// campus: a site of about 100 m x 100 m, starts along its south edge, six buildings, five of
+// them with two or three storeys; every floor of every building is there (a floor right below
+// a point 1 m above its level, in the middle of the building).
+TEST(Scenes, CampusIsAHundredMetreSiteOfBuildingsWithStoreys) {
+  const auto scene = generate_scene("campus", 1);
+  EXPECT_NEAR(scene.site.sizes().x(), 100.0, 5.0);
+  EXPECT_NEAR(scene.site.sizes().y(), 100.0, 10.0);
+  EXPECT_EQ(scene.suggested_starts.size(), 16u);
+  for (const auto& s : scene.suggested_starts) EXPECT_TRUE(scene.site.contains(s)) << s.transpose();
+  const auto buildings = detail::campus_buildings();
+  ASSERT_GE(buildings.size(), 6u);
+  const RayCaster caster(scene.mesh);
+  int storeyed = 0;
+  for (const auto& c : buildings) {
+    storeyed += c.floors >= 2;
+    const Rect& f = c.footprint;
+    for (int k = 0; k < c.floors; ++k) {
+      const Eigen::Vector3f above(0.5f * float(f.x0 + f.x1), 0.5f * float(f.y0 + f.y1),
+                                  float(c.base_z + k * c.storey_m + 1.0));
+      EXPECT_NEAR(caster.cast(above, -Eigen::Vector3f::UnitZ(), 0.0f, 2.0f), 1.0f, 1e-3f) << c.name << " floor " << k;
+    }
+  }
+  EXPECT_GE(storeyed, 5);
+}
+
+// campus climbs (every flight between storeys, the parking deck's 16 deg ramp, the lab's plinth
+// steps): the quadruped and the SLUGCAT walk or drive up every one to the level above, the
+// wheeled MR1000 up none.
+TEST(Scenes, CampusClimbsTakeTheQuadrupedAndTheTrackedRobotUpOnly) {
+  const auto scene = generate_scene("campus", 1);
+  const RayCaster caster(scene.mesh);
+  const auto climbs = detail::campus_climbs();
+  ASSERT_GE(climbs.size(), 7u);
+  for (const auto& climb : climbs) {
+    const Eigen::Vector3d start = climb.path.front(), towards = climb.path[1];
+    const double yaw = std::atan2(towards.y() - start.y(), towards.x() - start.x());
+    for (const auto& species : {core::builtin_quadruped(), core::builtin_slugcat(), core::builtin_mr1000()}) {
+      RobotMotion robot(caster, species, start, yaw);
+      robot.follow({climb.path.begin() + 1, climb.path.end()});
+      for (int i = 0; i < 1200 && robot.state() == MotionState::kMoving; ++i) robot.step(0.1);
+      const std::string what = climb.name + " " + species.name + ": " + to_string(robot.block_reason());
+      if (species.name == "MR1000") {
+        EXPECT_EQ(robot.state(), MotionState::kBlocked) << what;
+        EXPECT_LT(robot.ground_position().z(), start.z() + 0.3) << what;
+      } else {
+        EXPECT_EQ(robot.state(), MotionState::kIdle) << what << " at " << robot.ground_position().transpose();
+        EXPECT_NEAR(robot.ground_position().z(), climb.top_z, 1e-3) << what;
+      }
+    }
+  }
+}
+
+// campus, who gets where from the south edge: the workshop behind its masonry yard is the
+// SLUGCAT's alone; the quadruped and the SLUGCAT reach the lab on its plinth and the upper
+// floors; the MR1000 neither, but the ground floors of the other buildings and the streets.
+TEST(Scenes, CampusWorkshopIsTheTrackedRobotsAndUpperFloorsTheClimbers) {
+  const auto scene = generate_scene("campus", 1);
+  const RayCaster caster(scene.mesh);
+  const auto buildings = detail::campus_buildings();
+  auto inside = [&](const std::string& name, const Eigen::Vector3d& p) {
+    for (const auto& c : buildings)
+      if (c.name == name) return c.footprint.contains(p.x(), p.y());
+    return false;
+  };
+  struct Reach {
+    size_t workshop = 0, lab = 0, upstairs = 0, total = 0;
+  };
+  auto reach = [&](const core::SpeciesConfig& species) {
+    const std::vector<Eigen::Vector3d> starts = {scene.suggested_starts[7]};
+    Reach r;
+    for (const auto& p : reachable_ground(caster, species, starts, scene.site)) {
+      ++r.total;
+      r.workshop += inside("workshop", p);
+      r.lab += inside("lab", p);
+      r.upstairs += p.z() > 3.0;
+    }
+    return r;
+  };
+  const Reach tracked = reach(core::builtin_slugcat()), legged = reach(core::builtin_quadruped()),
+              wheeled = reach(core::builtin_mr1000());
+  EXPECT_GT(tracked.workshop, 500u);
+  EXPECT_EQ(legged.workshop, 0u);
+  EXPECT_EQ(wheeled.workshop, 0u);
+  EXPECT_GT(legged.lab, 1000u);
+  EXPECT_GT(tracked.lab, 1000u);
+  EXPECT_EQ(wheeled.lab, 0u);
+  EXPECT_GT(legged.upstairs, 5000u);
+  EXPECT_GT(tracked.upstairs, 5000u);
+  EXPECT_EQ(wheeled.upstairs, 0u);
+  EXPECT_GT(wheeled.total, 20000u);
 }
 
 }  // namespace
