@@ -13,9 +13,8 @@ void write_graph_ply(const TopologyGraph& graph, std::ostream& out) {
   for (size_t i = 0; i < keys.size(); ++i) row[keys[i]] = i;
   std::vector<std::pair<size_t, size_t>> edges;
   for (size_t i = 0; i < keys.size(); ++i)
-    for (const auto& [other, length] : graph.neighbours(keys[i])) {
-      (void)length;
-      const auto it = row.find(other);
+    for (const auto& neighbour : graph.neighbours(keys[i])) {
+      const auto it = row.find(neighbour.first);
       if (it != row.end() && it->second > i) edges.emplace_back(i, it->second);
     }
   out << "ply\nformat ascii 1.0\ncomment hexplore traversal-topology graph\n"
