@@ -85,38 +85,58 @@ ClearanceIndex::Patch ClearanceIndex::facade_patch(const Entry& facade) const {
   return patch;
 }
 
-void ClearanceIndex::add_rims(const Entry& g, std::vector<Patch>& out) const {
+namespace {
+const Eigen::Vector2d kSides[kRimSideCount] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+}  // namespace
+
+Eigen::Vector2d rim_side_direction(int side) { return kSides[side]; }
+
+uint8_t ClearanceIndex::open_sides(const Entry& g) const {
   // Sides +x, -x, +y, -y: whether ground lies beyond (a neighbour supervoxel at this level about
   // one spacing out that way; centres are voxel means, so neither exactly one spacing out nor
   // in line), and whether a wall stands there (it already keeps bodies off; a rim would double it).
-  static const Eigen::Vector2d kSides[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   const double step = options_.ground_spacing_m;
   const Eigen::Vector2d c = g.center.head<2>();
-  Patch rims[4];
-  for (int i = 0; i < 4; ++i) {
-    rims[i].center = c + 0.5 * step * kSides[i];
-    rims[i].along = Eigen::Vector2d(-kSides[i].y(), kSides[i].x());
-    rims[i].half = 0.5 * step;
-  }
-  bool closed[4] = {false, false, false, false};
+  bool closed[kRimSideCount] = {false, false, false, false};
   for_each_near(g.center, 1.75 * step, [&](const Entry& e) {
     if (e.key == g.key) return;
     const Eigen::Vector2d off = e.center.head<2>() - c;
     const bool facade = in_band(e, g.center);
     if (!facade && (e.facade || std::abs(e.center.z() - g.center.z()) > options_.ground_band_m)) return;
     const Patch wall = facade ? facade_patch(e) : Patch{};
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < kRimSideCount; ++i) {
       if (closed[i]) continue;
+      const Eigen::Vector2d along(-kSides[i].y(), kSides[i].x());
       if (facade) {
-        closed[i] = (nearest_point(wall, rims[i].center) - rims[i].center).norm() <= 0.5 * step;
+        const Eigen::Vector2d rim_centre = c + 0.5 * step * kSides[i];
+        closed[i] = (nearest_point(wall, rim_centre) - rim_centre).norm() <= 0.5 * step;
       } else {
         const double out = off.dot(kSides[i]);
-        closed[i] = out > 0.25 * step && out <= 1.75 * step && std::abs(off.dot(rims[i].along)) <= 0.75 * step;
+        closed[i] = out > 0.25 * step && out <= 1.75 * step && std::abs(off.dot(along)) <= 0.75 * step;
       }
     }
   });
-  for (int i = 0; i < 4; ++i)
-    if (!closed[i]) out.push_back(rims[i]);
+  uint8_t open = 0;
+  for (int i = 0; i < kRimSideCount; ++i)
+    if (!closed[i]) open |= uint8_t(1u << i);
+  return open;
+}
+
+uint8_t ClearanceIndex::open_sides(const Supervoxel& ground) const {
+  return open_sides(Entry{ground.key, ground.center, ground.normal, false});
+}
+
+void ClearanceIndex::add_rims(const Entry& g, std::vector<Patch>& out) const {
+  const double step = options_.ground_spacing_m;
+  const uint8_t open = open_sides(g);
+  for (int i = 0; i < kRimSideCount; ++i) {
+    if ((open & (1u << i)) == 0) continue;
+    Patch rim;
+    rim.center = g.center.head<2>() + 0.5 * step * kSides[i];
+    rim.along = Eigen::Vector2d(-kSides[i].y(), kSides[i].x());
+    rim.half = 0.5 * step;
+    out.push_back(rim);
+  }
 }
 
 std::vector<ClearanceIndex::Patch> ClearanceIndex::patches_near(const Eigen::Vector3d& p, double radius) const {

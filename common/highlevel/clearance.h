@@ -35,6 +35,11 @@ struct ClearanceOptions {
   bool enabled() const { return !body_radius_m.empty(); }
 };
 
+// The four sides of a ground supervoxel the rim test looks at: +x, -x, +y, -y (bit i of
+// ClearanceIndex::open_sides is side i).
+inline constexpr int kRimSideCount = 4;
+Eigen::Vector2d rim_side_direction(int side);
+
 // Footprint half-diagonal and half-width of every species of the team (species index order).
 std::vector<double> body_radii(const core::TeamConfig& team);
 std::vector<double> body_half_widths(const core::TeamConfig& team);
@@ -69,6 +74,10 @@ class ClearanceIndex {
   // How far a vertex's clearance is measured: the largest body radius and a margin (a vertex
   // with no patch that close reads this value).
   double search_m() const;
+  // The sides of a ground supervoxel (bit i: rim_side_direction(i)) with neither ground about
+  // one spacing out at its level nor a wall: where the known ground ends. The supervoxel need
+  // not be in the index.
+  uint8_t open_sides(const Supervoxel& ground) const;
   // Keys of ground supervoxels centred within `radius` (in the plane) of p.
   std::vector<uint64_t> ground_near(const Eigen::Vector3d& p, double radius) const;
 
@@ -95,7 +104,8 @@ class ClearanceIndex {
   bool in_band(const Entry& facade, const Eigen::Vector3d& p) const;
   // The patches that may lie within `radius` of p (facades in p's band, rims at p's level).
   std::vector<Patch> patches_near(const Eigen::Vector3d& p, double radius) const;
-  // The rim patches of ground entry g: its sides with neither ground nor a wall beyond.
+  uint8_t open_sides(const Entry& g) const;
+  // The rim patches of ground entry g: a strip half a spacing out on each open side.
   void add_rims(const Entry& g, std::vector<Patch>& out) const;
   static double distance(const std::vector<Patch>& patches, const Eigen::Vector2d& p, double cap);
   double largest_radius() const;

@@ -15,13 +15,25 @@ void HighLevelMap::clear() {
   incident_.clear();
   graph_.clear();
   clearance_.clear();
+  open_sides_.clear();
 }
 
 void HighLevelMap::sync_clearance(uint64_t key) {
   const Supervoxel* sv = find(key);
-  if (sv == nullptr || !graph_.contains(key)) return;
+  if (sv == nullptr || !graph_.contains(key)) {
+    open_sides_.erase(key);
+    return;
+  }
   ClearanceIndex::Measure m = clearance_.measure(sv->center, clearance_.search_m(), clearance_.options().body_radius_m);
   graph_.set_clearance(key, m.clearance, std::move(m.waypoints));
+  const uint8_t open = clearance_.open_sides(*sv);
+  if (open != 0) open_sides_[key] = open;
+  else open_sides_.erase(key);
+}
+
+uint8_t HighLevelMap::open_sides(uint64_t key) const {
+  const auto it = open_sides_.find(key);
+  return it == open_sides_.end() ? 0 : it->second;
 }
 
 const Supervoxel* HighLevelMap::find(uint64_t key) const {
@@ -70,6 +82,7 @@ void HighLevelMap::apply(const MapUpdate& update) {
     forget(key);
     supervoxels_.erase(key);
     graph_.remove_vertex(key);
+    open_sides_.erase(key);
   }
   for (const EdgeKey& e : update.edge_removals) {
     if (edges_.erase(e) == 0) continue;

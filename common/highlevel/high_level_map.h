@@ -4,7 +4,8 @@
 // MapUpdate batches: fused changes from MapFusion inside hlmap, or FusedMapUpdate messages
 // received by planning (see map_proto.h). With clearance options (planning's map), every
 // graph vertex also carries its clearance from the facades around it and, per species, a
-// waypoint moved away from them (see clearance.h, topology_graph.h).
+// waypoint moved away from them (see clearance.h, topology_graph.h), and the sides on which
+// the known ground ends (its rim: the frontier of what the team has seen of the ground).
 
 #include <cstdint>
 #include <map>
@@ -54,6 +55,11 @@ class HighLevelMap {
   size_t size() const { return supervoxels_.size(); }
   // The whole map as one full-snapshot update.
   MapUpdate snapshot() const;
+  // Planning's map (with clearance options): the sides of ground vertex `key` where the known
+  // ground ends (ClearanceIndex::open_sides, bit i: rim_side_direction(i)); 0 for anything
+  // else, and always 0 without clearance options.
+  uint8_t open_sides(uint64_t key) const;
+  const ClearanceOptions& clearance_options() const { return clearance_.options(); }
   // Number of applied batches that changed something.
   uint64_t version() const { return version_; }
 
@@ -68,6 +74,7 @@ class HighLevelMap {
   std::unordered_map<uint64_t, std::vector<uint64_t>> incident_;  // key -> edge partners
   TopologyGraph graph_;
   ClearanceIndex clearance_;
+  std::unordered_map<uint64_t, uint8_t> open_sides_;  // ground vertices with a rim only
   uint64_t version_ = 0;
 };
 

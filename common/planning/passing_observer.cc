@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/planning/frontier.h"
 #include "common/planning/visibility.h"
 
 namespace hexplore::planning {
@@ -30,7 +31,7 @@ void PassingObserver::step(double now_s, const Eigen::Vector3d& position, const 
   for (const Pending& p : pending_) {
     if (!due(p)) continue;
     const highlevel::Supervoxel* sv = map.find(p.key);
-    if (!sv || sv->covered || ledger.given_up(p.key, sv->voxel_count)) continue;
+    if (!sv || !needs_look(map, *sv, planner_.region) || ledger.given_up(p.key, sv->voxel_count)) continue;
     ledger.observed(p.key, p.spot, sv->voxel_count);
     ++observations_;
   }
@@ -42,7 +43,7 @@ void PassingObserver::step(double now_s, const Eigen::Vector3d& position, const 
   const OcclusionGrid occlusion(map, planner_.eta_s_m);
   const double reach = std::max(passing_.range_m, passing_.ground_reach_m);
   for (const auto& [key, sv] : map.supervoxels()) {
-    if (sv.covered || !planner_.region.contains(sv.center)) continue;
+    if (!needs_look(map, sv, planner_.region) || !planner_.region.contains(sv.center)) continue;
     if (sv.ground() && !sv.traversable()) continue;
     if ((sv.center - position).squaredNorm() > reach * reach) continue;
     if (ledger.given_up(key, sv.voxel_count) || !in_view(sv, position, occlusion)) continue;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "common/planning/executable_path.h"
+#include "common/planning/frontier.h"
 #include "common/planning/visibility.h"
 
 namespace hexplore::planning {
@@ -12,13 +13,16 @@ namespace {
 
 double horizontal(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return (a - b).head<2>().norm(); }
 
-// Whether a target still needs looking at: in the map, incomplete and not given up.
-bool open_target(uint64_t key, const highlevel::HighLevelMap& map, const GiveUpLedger& ledger) {
+// Whether a target still needs looking at: in the map, incomplete (or at the frontier) and not
+// given up.
+bool open_target(uint64_t key, const highlevel::HighLevelMap& map, const GiveUpLedger& ledger,
+                 const Eigen::AlignedBox3d& region) {
   const highlevel::Supervoxel* sv = map.find(key);
-  return sv && !sv->covered && !ledger.given_up(key, sv->voxel_count);
+  return sv && needs_look(map, *sv, region) && !ledger.given_up(key, sv->voxel_count);
 }
-bool open_view(const TaskView& v, const highlevel::HighLevelMap& map, const GiveUpLedger& ledger) {
-  return std::any_of(v.targets.begin(), v.targets.end(), [&](uint64_t t) { return open_target(t, map, ledger); });
+bool open_view(const TaskView& v, const highlevel::HighLevelMap& map, const GiveUpLedger& ledger,
+               const Eigen::AlignedBox3d& region) {
+  return std::any_of(v.targets.begin(), v.targets.end(), [&](uint64_t t) { return open_target(t, map, ledger, region); });
 }
 
 constexpr double kProgressM = 0.5;    // moving this far counts as progress
@@ -173,12 +177,12 @@ std::optional<MotionOrder> RouteFollower::next_order(double now_s, const Eigen::
     const size_t was = aim_index_;
     const bool time_left = was < aims_.size() && now_s - aim_start_s_ < aim_s_;
     while (aim_index_ < aims_.size() &&
-           (!open_target(aims_[aim_index_].target, map, ledger) || now_s - aim_start_s_ >= aim_s_)) {
+           (!open_target(aims_[aim_index_].target, map, ledger, options_.region) || now_s - aim_start_s_ >= aim_s_)) {
       ++aim_index_;
       aim_start_s_ = now_s;
     }
     const bool all_done = std::none_of(observed_targets_.begin(), observed_targets_.end(),
-                                       [&](uint64_t t) { return open_target(t, map, ledger); });
+                                       [&](uint64_t t) { return open_target(t, map, ledger, options_.region); });
     const bool aims_over = aim_index_ >= aims_.size() && now_s - observe_start_s_ >= options_.min_aim_s;
     if (aims_over || all_done) {
       if (all_done && time_left) ++counters_.dwells_cut_short;
@@ -199,7 +203,7 @@ std::optional<MotionOrder> RouteFollower::next_order(double now_s, const Eigen::
     return drive(position, map, keep_off, ledger);
   }
   if (next_ >= route_.size()) return std::nullopt;
-  if (driving_ && !open_view(route_[next_], map, ledger)) {
+  if (driving_ && !open_view(route_[next_], map, ledger, options_.region)) {
     // Its targets got complete (a teammate, or scans in passing) or given up: on to the next.
     ++counters_.views_done_before;
     ++next_;
@@ -233,7 +237,7 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
     for (uint64_t t : v.targets) {
       // Observed from here a moment ago and not judged yet: a second look from the same spot
       // would only delay the verdict (the next view of it stands elsewhere if it fails).
-      if (!open_target(t, map, ledger) || awaiting_judgement(t, position, ledger.rules().distinct_m)) continue;
+      if (!open_target(t, map, ledger, options_.region) || awaiting_judgement(t, position, ledger.rules().distinct_m)) continue;
       observed_targets_.push_back(t);
       if (v.facade) add_aim(t, map);
     }
@@ -317,7 +321,7 @@ std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position,
   avoid.insert(keep_off.begin(), keep_off.end());
   const size_t first = next_;
   for (; next_ < route_.size(); ++next_) {
-    if (!open_view(route_[next_], map, ledger)) {
+    if (!open_view(route_[next_], map, ledger, options_.region)) {
       ++counters_.views_done_before;
       continue;
     }
@@ -385,7 +389,7 @@ void RouteFollower::skip_current(const Eigen::Vector3d& position, const highleve
 void RouteFollower::fail_targets(const TaskView& view, const highlevel::HighLevelMap& map, GiveUpLedger& ledger) {
   for (uint64_t t : view.targets) {
     const highlevel::Supervoxel* sv = map.find(t);
-    if (sv && !sv->covered) ledger.failed(t, sv->voxel_count);
+    if (sv && needs_look(map, *sv, options_.region)) ledger.failed(t, sv->voxel_count);
   }
 }
 
@@ -404,10 +408,10 @@ void RouteFollower::track_progress(double now_s, const Eigen::Vector3d& position
   blocked_seen_ = blocked_seen_ || state == DriveState::kBlocked;
 }
 
-TargetJudgement RouteFollower::judgement(const highlevel::Supervoxel& sv, const Eigen::Vector3d& spot) {
+TargetJudgement RouteFollower::judgement(const highlevel::Supervoxel& sv, const Eigen::Vector3d& spot, bool complete) {
   TargetJudgement j;
   j.target = sv.key;
-  j.complete = sv.covered;
+  j.complete = complete;
   j.voxels = sv.voxel_count;
   j.covered_voxels = sv.covered_voxels;
   j.gap = int(sv.gap);
@@ -433,9 +437,10 @@ void RouteFollower::judge(double now_s, const highlevel::HighLevelMap& map, Give
       const highlevel::Supervoxel* sv = map.find(t);
       if (!sv) continue;  // re-segmented away since
       ++counters_.targets_judged;
-      if (!sv->covered) ledger.observed(t, c.spot, sv->voxel_count);
+      const bool open = needs_look(map, *sv, options_.region);
+      if (open) ledger.observed(t, c.spot, sv->voxel_count);
       else ++counters_.targets_complete_when_judged;
-      if (options_.record_judgements) judgements_.push_back(judgement(*sv, c.spot));
+      if (options_.record_judgements) judgements_.push_back(judgement(*sv, c.spot, !open));
     }
   }
   pending_.erase(std::remove_if(pending_.begin(), pending_.end(), due), pending_.end());

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "common/highlevel/high_level_map.h"
 #include "common/planning/give_up_ledger.h"
@@ -56,6 +57,9 @@ struct FollowerOptions {
   // has, come next in their old order. 0: only the leg is kept.
   double keep_stretch_m = 5.0;
   bool record_judgements = false;   // keep a TargetJudgement per judged target (for the trace)
+  // The exploration region: ground at the frontier needs a look only where what lies beyond it
+  // is inside (common/planning/frontier.h). Unbounded unless the team file sets one.
+  Eigen::AlignedBox3d region = PlannerOptions::unbounded();
   // The leg being driven gives way to a new route's first view that is this much nearer by path.
   double switch_gain_m = 3.0;
 };
@@ -165,7 +169,7 @@ class RouteFollower {
   void fail_targets(const TaskView& view, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void skip_current(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void track_progress(double now_s, const Eigen::Vector3d& position, DriveState state);
-  static TargetJudgement judgement(const highlevel::Supervoxel& sv, const Eigen::Vector3d& spot);
+  static TargetJudgement judgement(const highlevel::Supervoxel& sv, const Eigen::Vector3d& spot, bool complete);
   void judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch);
   bool reached(const TaskView& view, const Eigen::Vector3d& position) const;  // reach_m / observe_reach_m

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "common/planning/frontier.h"
 #include "common/planning/labels.h"
 #include "common/planning/mtsp/mtsp_problem.h"
 
@@ -175,7 +176,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
       continue;
     }
     for (const auto* g : ctx.ground.within(view.position, o.ground_cover_radius_m)) {
-      if (g->covered || covered_ground.count(g->key) || ctx.is_ignored(g->key) || !o.region.contains(g->center)) continue;
+      if (!needs_look(ctx.map, *g, o.region) || covered_ground.count(g->key) || ctx.is_ignored(g->key) || !o.region.contains(g->center)) continue;
       if (ctx.tried_from(g->key, view.position)) continue;
       view.targets.push_back(g->key);
       covered_ground.insert(g->key);
@@ -186,7 +187,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     ++st.facade_views;
   }
   for (const auto& [key, sv] : ctx.map.supervoxels()) {
-    if (!sv.traversable() || sv.covered || covered_ground.count(key) || excluded(key, sv)) continue;
+    if (!sv.traversable() || !needs_look(ctx.map, sv, o.region) || covered_ground.count(key) || excluded(key, sv)) continue;
     if (!ctx.is_reachable(key)) {
       ++st.unreachable_ground;
       record(key, TargetOutcome::kUnreachable);

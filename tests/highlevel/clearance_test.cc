@@ -187,6 +187,11 @@ TEST(Clearance, TheRimOfTheKnownGroundKeepsBodiesOffLikeAWall) {
   EXPECT_TRUE(g.room_to_stand(edge, 0));
   EXPECT_GT(g.clearance_penalty(edge, 0), 0.0);
   EXPECT_EQ(g.clearance_penalty(inside, 0), 0.0);
+  // The map says which sides are open (bit i: rim_side_direction(i); -y is side 3, -x side 1).
+  EXPECT_EQ(map.open_sides(edge), 1u << 3);
+  EXPECT_EQ(map.open_sides(corner), (1u << 1) | (1u << 3));
+  EXPECT_EQ(map.open_sides(inside), 0u);
+  EXPECT_EQ(rim_side_direction(3), Eigen::Vector2d(0, -1));
 }
 
 // Along a wall the rim is not counted twice: the hall's rows next to its walls move as far as
@@ -197,6 +202,7 @@ TEST(Clearance, AWallAtTheEdgeOfTheGroundIsNotARimAsWell) {
   HighLevelMap map({1}, o);
   map.apply(hall(4.0, 0.5, 4));
   const uint64_t by_wall = supervoxel_key({5, 0, 0}, SurfaceClass::kGround);
+  EXPECT_EQ(map.open_sides(by_wall), 0u);
   EXPECT_NEAR(map.graph().clearance(by_wall), 0.5, 1e-9);
   EXPECT_NEAR(map.graph().waypoint(by_wall, 0)->y(), 0.61, 1e-6);
   EXPECT_NEAR(map.graph().waypoint(by_wall, 0)->x(), 5.5, 1e-6);
@@ -214,12 +220,15 @@ TEST(Clearance, GroundSeenBeyondTheRimMovesIt) {
   MapUpdate more = open_ground(-0.5, 1);
   for (Supervoxel& s : more.upserts) s.key = supervoxel_key({int(std::floor(s.center.x())), -1, 0}, SurfaceClass::kGround);
   more.edge_upserts.clear();
+  EXPECT_NE(map.open_sides(old_edge), 0u);
   map.apply(more);
+  EXPECT_EQ(map.open_sides(old_edge), 0u);
   EXPECT_GE(map.graph().clearance(old_edge), 0.61);
   EXPECT_EQ(*map.graph().waypoint(old_edge, 0), *map.graph().position(old_edge));
   MapUpdate gone;
   for (const Supervoxel& s : more.upserts) gone.removals.push_back(s.key);
   map.apply(gone);
+  EXPECT_NE(map.open_sides(old_edge), 0u);
   EXPECT_NEAR(map.graph().clearance(old_edge), 0.5, 1e-9);
   EXPECT_NEAR(map.graph().waypoint(old_edge, 0)->y(), 0.61, 1e-6);
 }
@@ -311,6 +320,7 @@ TEST_P(ClearanceOrder, TheSameMapGivesTheSameClearanceWhateverTheOrderOfUpdates)
     EXPECT_NEAR(batches.graph().clearance(key), once.graph().clearance(key), 1e-9) << seed_cell_of(key).x << "," << seed_cell_of(key).y;
     for (int species = 0; species < 2; ++species)
       EXPECT_LT((*batches.graph().waypoint(key, species) - *once.graph().waypoint(key, species)).norm(), 1e-9);
+    EXPECT_EQ(batches.open_sides(key), once.open_sides(key)) << seed_cell_of(key).x << "," << seed_cell_of(key).y;
   }
 }
 

@@ -19,6 +19,7 @@
 #include "common/highlevel/segmenter.h"
 #include "common/perception/perception_map.h"
 #include "common/perception/voxel_proto.h"
+#include "common/planning/frontier.h"
 #include "common/sim/lidar.h"
 #include "common/sim/robot_motion.h"
 #include "common/sim/scene_parts.h"
@@ -31,9 +32,11 @@ constexpr int kSlugcat = 0;  // species indices of the team {SLUGCAT, MR1000}
 constexpr int kMr1000 = 1;
 
 // The high-level map of what a robot of team[driver] saw driving `climb`, scanning every half
-// metre with its first LiDAR.
+// metre with its first LiDAR; with stop_below_top_m >= 0, only until its ground is that far
+// below the climb's top.
 highlevel::HighLevelMap map_of_climb(const sim::RayCaster& caster, const sim::detail::Climb& climb,
-                                     const std::vector<core::SpeciesConfig>& team, size_t driver) {
+                                     const std::vector<core::SpeciesConfig>& team, size_t driver,
+                                     double stop_below_top_m = -1.0, highlevel::ClearanceOptions clearance = {}) {
   const core::SpeciesConfig& species = team[driver];
   perception::PerceptionMap map(perception::make_map_params(core::AlgorithmParams{}, team, species));
   sim::LidarModel lidar(species.lidars[0], 7);
@@ -43,6 +46,7 @@ highlevel::HighLevelMap map_of_climb(const sim::RayCaster& caster, const sim::de
   std::vector<float> xyz;
   double scanned_at = -1.0;
   for (int i = 0; i < 4000 && robot.state() == sim::MotionState::kMoving; ++i) {
+    if (stop_below_top_m >= 0.0 && robot.ground_position().z() >= climb.top_z - stop_below_top_m) break;
     robot.step(0.05);
     if (robot.odometry_m() - scanned_at < 0.5 && robot.state() == sim::MotionState::kMoving) continue;
     scanned_at = robot.odometry_m();
@@ -55,7 +59,7 @@ highlevel::HighLevelMap map_of_climb(const sim::RayCaster& caster, const sim::de
     points.count = scan.points.size();
     map.integrate(points, {});
   }
-  EXPECT_NEAR(robot.ground_position().z(), climb.top_z, 1e-3) << climb.name << ": the robot did not get up";
+  if (stop_below_top_m < 0.0) EXPECT_NEAR(robot.ground_position().z(), climb.top_z, 1e-3) << climb.name << ": the robot did not get up";
 
   // Voxels as the hlmap service receives them (through the wire message), one full update.
   std::vector<highlevel::VoxelSample> samples;
@@ -72,7 +76,7 @@ highlevel::HighLevelMap map_of_climb(const sim::RayCaster& caster, const sim::de
   update.full_snapshot = true;
   for (const auto& [key, sv] : segmenter.supervoxels()) update.upserts.push_back(sv);
   update.edge_upserts = segmenter.edges();
-  highlevel::HighLevelMap hl(levels);
+  highlevel::HighLevelMap hl(levels, clearance);
   hl.apply(update);
   return hl;
 }
@@ -121,6 +125,47 @@ TEST(ClimbGraph, MultiStoreyRampsAndStairsConnectTheFloorsForTheTrackedSpeciesOn
       EXPECT_EQ(g.dist(*wheeled_from, *to, kMr1000), highlevel::TopologyGraph::kUnreachable) << climb.name;
     }
   }
+}
+
+// Ramp B's crest hides the roof deck from a sensor on the ramp until the robot is within about
+// a metre of the top: mapped from 1 m below the top, the graph ends at the crest, and only the
+// frontier (the rim of the known ground, common/planning/frontier.h) says there is more to see
+// there. From 0.3 m below the top the roof is ground of the graph, joined to the ramp.
+TEST(ClimbGraph, RampBCrestIsAFrontierUntilTheRobotIsNearlyAtTheTop) {
+  const auto scene = sim::generate_scene("multi-storey", 1);
+  const sim::RayCaster caster(scene.mesh);
+  const auto climbs = sim::detail::multi_storey_climbs();
+  const auto& ramp_b = climbs[2];
+  ASSERT_EQ(ramp_b.name.substr(0, 6), "ramp B");
+  const std::vector<core::SpeciesConfig> team = {core::builtin_slugcat(), core::builtin_mr1000()};
+  highlevel::ClearanceOptions clearance;
+  for (const auto& s : team) {
+    clearance.body_radius_m.push_back(s.body_half_extents_m.head<2>().norm());
+    clearance.body_half_width_m.push_back(s.body_half_extents_m.y());
+  }
+  const Eigen::AlignedBox3d region(Eigen::Vector3d(-2, -5, -0.5), Eigen::Vector3d(34, 27, 7.5));  // multi-storey.yaml
+  const Eigen::Vector3d crest(17.77, 20.5, 6.0), roof(15.5, 20.5, 6.0);
+
+  const auto below = map_of_climb(caster, ramp_b, team, kSlugcat, /*stop_below_top_m=*/1.0, clearance);
+  const auto& g = below.graph();
+  const auto near_crest = g.nearest(crest, kSlugcat);
+  ASSERT_TRUE(near_crest);
+  EXPECT_LT((*g.position(*near_crest) - crest).norm(), 0.6) << at(g, *near_crest);
+  for (uint64_t key : g.vertex_keys())
+    if (g.position(key)->z() > 5.9 && g.position(key)->y() > 18.5) EXPECT_GT(g.position(key)->x(), 17.5) << "roof ground mapped from below the crest at " << at(g, key);
+  int frontier = 0;
+  for (uint64_t key : g.vertex_keys()) {
+    const Eigen::Vector3d p = *g.position(key);
+    if (p.x() < 18.2 && p.z() > 5.7) frontier += planning::at_frontier(below, *below.find(key), region) ? 1 : 0;
+  }
+  EXPECT_GE(frontier, 1) << "the crest is not at the frontier";
+
+  const auto top = map_of_climb(caster, ramp_b, team, kSlugcat, /*stop_below_top_m=*/0.3, clearance);
+  const auto& t = top.graph();
+  const auto on_roof = t.nearest(roof, kSlugcat), on_ramp = t.nearest(Eigen::Vector3d(20.3, 20.5, 5.2), kSlugcat);
+  ASSERT_TRUE(on_roof && on_ramp);
+  EXPECT_LT((*t.position(*on_roof) - roof).norm(), 1.0) << at(t, *on_roof);
+  EXPECT_LT(t.dist(*on_ramp, *on_roof, kSlugcat), highlevel::TopologyGraph::kUnreachable) << "no path from " << at(t, *on_ramp) << " to " << at(t, *on_roof);
 }
 
 // The campus flights (0.148 m risers, 26 deg), its parking deck's 16 deg ramp and the lab's

@@ -10,6 +10,7 @@
 #include "common/planning/clustering.h"
 #include "common/planning/cost_model.h"
 #include "common/planning/executable_path.h"
+#include "common/planning/frontier.h"
 #include "common/planning/labels.h"
 #include "common/planning/planner_registry.h"
 #include "common/planning/rng.h"
@@ -144,6 +145,45 @@ TEST(TaskViews, WallsOccludeTheirBackSide) {
   EXPECT_EQ(views[0].key, target);
   EXPECT_NE(views[0].ground_key, west);  // the west view is behind the occluder
   EXPECT_EQ(views[0].ground_key, near_west);  // the east one behind the target
+}
+
+// The frontier of the known ground (common/planning/frontier.h): on a patch of covered ground,
+// the vertices whose side opens onto unseen ground inside the exploration region get a ground
+// view; sides facing out of the region, and covered ground inside, get none. Without clearance
+// options (no rim known) the same map has no view at all.
+TEST(TaskViews, GroundWhereTheKnownGroundEndsInsideTheRegionGetsAView) {
+  highlevel::MapUpdate up;
+  up.full_snapshot = true;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 3; ++j) add_supervoxel(up, {i + 0.5, j + 0.5, 0.0}, highlevel::SurfaceClass::kGround, Eigen::Vector3d::UnitZ());
+  for (size_t a = 0; a < up.upserts.size(); ++a)
+    for (size_t b = a + 1; b < up.upserts.size(); ++b)
+      if ((up.upserts[a].center - up.upserts[b].center).norm() < 1.5)
+        up.edge_upserts.push_back(highlevel::EdgeKey::of(up.upserts[a].key, up.upserts[b].key));
+  Fixture f;
+  PlannerOptions o = f.options;
+  // Beyond x = 5 is inside the region, beyond x = 0 and the y sides outside it.
+  o.region = Eigen::AlignedBox3d(Eigen::Vector3d(0.2, 0.2, -1.0), Eigen::Vector3d(10.0, 2.8, 3.0));
+  highlevel::ClearanceOptions clearance;
+  clearance.body_radius_m = {0.5, 0.5};
+  clearance.body_half_width_m = {0.3, 0.3};
+  highlevel::HighLevelMap map({2, 1}, clearance);
+  map.apply(up);
+  const MapContext ctx(map, o);
+  const auto views = generate_task_views(ctx, f.caps, o);
+  std::set<double> xs;
+  for (const auto& v : views) {
+    EXPECT_FALSE(v.facade);
+    xs.insert(v.position.x());
+    EXPECT_TRUE(at_frontier(map, *map.find(v.key), o.region));
+  }
+  EXPECT_EQ(views.size(), 3u);
+  EXPECT_EQ(xs, std::set<double>{4.5});
+
+  highlevel::HighLevelMap no_rims({2, 1});
+  no_rims.apply(up);
+  const MapContext plain(no_rims, o);
+  EXPECT_TRUE(generate_task_views(plain, f.caps, o).empty());
 }
 
 // A target that stayed incomplete when observed from its best view gets its next view from
