@@ -108,7 +108,7 @@ double RouteFollower::path_length(const Eigen::Vector3d& from, const TaskView& v
 }
 
 bool RouteFollower::reached(const TaskView& view, const Eigen::Vector3d& position) const {
-  return horizontal(view.position, position) <= (view.facade ? options_.observe_reach_m : options_.reach_m);
+  return horizontal(view.position, position) <= (view.facade || view.frontier ? options_.observe_reach_m : options_.reach_m);
 }
 
 void RouteFollower::keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch) {

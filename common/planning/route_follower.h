@@ -34,7 +34,7 @@ namespace hexplore::planning {
 
 struct FollowerOptions {
   double reach_m = 1.0;             // a ground view counts as reached within this horizontal distance
-  // A facade view is observed only from within this distance of its spot: what the view was
+  // A facade view (and a view at the frontier) is observed only from within this distance of its spot: what the view was
   // chosen for (incidence, range, line of sight) holds there, not 1 m short of it (e2e scene,
   // seed 1: the SLUGCAT "observed" a view inside the room from its doorway, three times).
   double observe_reach_m = 0.3;

@@ -176,7 +176,8 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
       continue;
     }
     for (const auto* g : ctx.ground.within(view.position, o.ground_cover_radius_m)) {
-      if (!needs_look(ctx.map, *g, o.region) || covered_ground.count(g->key) || ctx.is_ignored(g->key) || !o.region.contains(g->center)) continue;
+      // Ground at the frontier is looked at from its own spot (beyond the rim is seen from the rim).
+      if (g->covered || at_frontier(ctx.map, *g, o.region) || covered_ground.count(g->key) || ctx.is_ignored(g->key) || !o.region.contains(g->center)) continue;
       if (ctx.tried_from(g->key, view.position)) continue;
       view.targets.push_back(g->key);
       covered_ground.insert(g->key);
@@ -199,6 +200,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
     view.position = sv.center;
     view.look_at = sv.center;
     view.targets = {key};
+    view.frontier = at_frontier(ctx.map, sv, o.region);
     view.traversal_requirement = sv.traversal_requirement;
     view.observation_requirement = 1;
     view.label = task_label(1, view.traversal_requirement, team, o.beta_zeta, o.beta_varsigma);

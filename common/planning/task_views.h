@@ -26,6 +26,9 @@ struct TaskView {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // p(xi) = p(ground supervoxel)
   Eigen::Vector3d look_at = Eigen::Vector3d::Zero();   // target centre (facade views)
   bool facade = false;         // in Xi_u (counts towards the observation time)
+  // A ground view at the frontier of the known ground (frontier.h): reached only at its spot,
+  // like a facade view, since what lies beyond the rim is seen from the rim.
+  bool frontier = false;
   std::vector<uint64_t> targets;  // ISE supervoxels it observes: its own first, then composite ground ones
   int traversal_requirement = 1;
   int observation_requirement = 1;

@@ -174,6 +174,7 @@ TEST(TaskViews, GroundWhereTheKnownGroundEndsInsideTheRegionGetsAView) {
   std::set<double> xs;
   for (const auto& v : views) {
     EXPECT_FALSE(v.facade);
+    EXPECT_TRUE(v.frontier);
     xs.insert(v.position.x());
     EXPECT_TRUE(at_frontier(map, *map.find(v.key), o.region));
   }

@@ -231,6 +231,23 @@ TEST(RouteFollower, AGroundViewIsDoneOnArrival) {
   EXPECT_EQ(order->path.goal.ground_key, next.ground_key);
 }
 
+// A ground view at the frontier of the known ground is reached at its spot, like a facade
+// view: 0.8 m short of a ramp's crest the roof beyond is not in sight yet (ClimbGraph test).
+TEST(RouteFollower, AViewAtTheFrontierIsReachedAtItsSpotNotAMetreShort) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  TaskView edge = view_at(d.map, {4.5, 4.5, 0}, false);
+  edge.frontier = true;
+  const TaskView next = view_at(d.map, {10.5, 4.5, 0}, false);
+  f.set_route({edge, next}, {1.5, 1.5, 0}, d.map);
+  const auto short_of = f.step(0.0, edge.position - Eigen::Vector3d(0.8, 0, 0), DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(short_of);
+  EXPECT_EQ(short_of->path.goal.ground_key, edge.ground_key);
+  const auto there = f.step(1.0, edge.position - Eigen::Vector3d(0.2, 0, 0), DriveState::kMoving, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(there);
+  EXPECT_EQ(there->path.goal.ground_key, next.ground_key);
+}
+
 TEST(RouteFollower, ANewRouteDoesNotCutAnObservationShort) {
   Drive d;
   RouteFollower f(d.options, 0);
