@@ -33,7 +33,7 @@ std::string round_trace_json(const RoundTrace& round, const PlanRequest& req, co
     << ", \"clusters\": " << res.clusters << ", \"open_views\": " << res.open_views
     << ", \"given_up\": " << round.given_up << ", \"reference\": \"" << res.reference_source
     << "\", \"agreement\": " << res.agreement.value_or(-1.0) << ", \"time_s\": " << res.times.total_s
-    << ", \"public_views\": " << res.view_stats.public_views << ", \"supervoxels\": {\"ground_complete\": " << complete[0]
+    << ", \"public_views\": " << res.view_stats.public_views << ", \"frontier_views\": " << res.view_stats.frontier_views << ", \"supervoxels\": {\"ground_complete\": " << complete[0]
     << ", \"ground_incomplete\": " << incomplete[0] << ", \"facade_complete\": " << complete[1]
     << ", \"facade_incomplete\": " << incomplete[1] << "}, \"clusters_per_robot\": [";
   for (size_t r = 0; r < res.robots.size(); ++r) j << (r ? ", " : "") << res.robots[r].cluster_ids.size();

@@ -209,6 +209,7 @@ std::vector<TaskView> generate_task_views(const MapContext& ctx, const TeamCapab
       continue;
     }
     record(key, TargetOutcome::kView);
+    st.frontier_views += view.frontier ? 1 : 0;
     views.push_back(std::move(view));
     ++st.ground_views;
   }

@@ -59,6 +59,7 @@ struct ViewGenerationStats {
   int unobservable_facades = 0;
   int composite_ground = 0;
   int ground_views = 0;
+  int frontier_views = 0;      // of the ground views, those at the frontier of the known ground (frontier.h)
   int outside_region = 0;      // ISE supervoxels outside the exploration region (no view)
   int ignored = 0;             // ISE supervoxels given up on (no view)
   int unreachable_ground = 0;  // ground ISE supervoxels nobody can stand on (no view)

@@ -170,7 +170,9 @@ TEST(TaskViews, GroundWhereTheKnownGroundEndsInsideTheRegionGetsAView) {
   highlevel::HighLevelMap map({2, 1}, clearance);
   map.apply(up);
   const MapContext ctx(map, o);
-  const auto views = generate_task_views(ctx, f.caps, o);
+  ViewGenerationStats stats;
+  const auto views = generate_task_views(ctx, f.caps, o, &stats);
+  EXPECT_EQ(stats.frontier_views, 3);
   std::set<double> xs;
   for (const auto& v : views) {
     EXPECT_FALSE(v.facade);
