@@ -4,6 +4,7 @@
 #include <map>
 #include <tuple>
 
+#include "common/planning/frontier.h"
 #include "common/planning/labels.h"
 #include "common/planning/view_costs.h"
 #include "common/planning/visibility.h"
@@ -71,9 +72,9 @@ std::vector<CandidateView> candidate_views(const MapContext& ctx, const std::vec
           if (req == 0 || !ctx.occlusion.clear(sensor, sv->center)) continue;
           seen.push_back({t, req, visibility_score(geo, o), true, sv->center});
         } else {
-          const double d = (g->center - sv->center).norm();
-          if (d > o.ground_cover_radius_m) continue;
-          seen.push_back({t, 1, 1.0 / (o.beta_l * d + 1e-3), false, sv->center});
+          const double score = ground_target_score(ctx.map, *g, *sv, o);
+          if (score <= 0.0) continue;
+          seen.push_back({t, 1, score, false, sv->center});
         }
       }
     if (seen.empty()) continue;
@@ -91,6 +92,7 @@ std::vector<CandidateView> candidate_views(const MapContext& ctx, const std::vec
       for (const Seen& s : seen) {
         if (s.requirement > level) continue;
         c.view.targets.push_back(s.target);
+        c.view.frontier = c.view.frontier || (!s.facade && at_frontier(ctx.map, *ctx.map.find(s.target), o.region));
         c.quality += s.score;
         if (s.facade && s.score > best) {
           best = s.score;

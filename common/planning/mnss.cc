@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "common/planning/frontier.h"
 #include "common/planning/visibility.h"
 
 namespace hexplore::planning {
@@ -103,7 +104,7 @@ std::vector<TaskView> mnss_tour(const MapContext& ctx, const std::vector<TaskVie
     const auto* g = candidates[c];
     for (size_t t = 0; t < T; ++t) {
       if (ctx.tried_from(targets[t]->key, g->center)) continue;
-      const double score = ground_view_score(*g, *targets[t], species.observation_range_m, ctx.occlusion, o, st.rays);
+      const double score = ground_view_score(ctx.map, *g, *targets[t], species.observation_range_m, ctx.occlusion, o, st.rays);
       if (score <= 0.0) continue;
       sees[c].push_back({int(t), score});
       seen_by[t].push_back(int(c));
@@ -132,6 +133,7 @@ std::vector<TaskView> mnss_tour(const MapContext& ctx, const std::vector<TaskVie
     for (const auto& [t, s] : sees[c]) {
       if (!covered_now[size_t(t)]) continue;
       v.targets.push_back(targets[size_t(t)]->key);
+      v.frontier = v.frontier || (!targets[size_t(t)]->facade() && at_frontier(ctx.map, *targets[size_t(t)], o.region));
       if (targets[size_t(t)]->facade() && s > best) {
         best = s;
         v.look_at = targets[size_t(t)]->center;

@@ -4,6 +4,7 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "common/planning/frontier.h"
 #include "common/planning/visibility.h"
 
 namespace hexplore::planning {
@@ -36,7 +37,7 @@ std::vector<TaskView> prune_route(const MapContext& ctx, std::vector<TaskView> r
     if (ground != nullptr)
       for (size_t t = 0; t < T; ++t)
         if (!mark[t] && !ctx.tried_from(targets[t]->key, ground->center))
-          mark[t] = ground_view_score(*ground, *targets[t], species.observation_range_m, ctx.occlusion, o, st.rays) > 0.0;
+          mark[t] = ground_view_score(ctx.map, *ground, *targets[t], species.observation_range_m, ctx.occlusion, o, st.rays) > 0.0;
     for (size_t t = 0; t < T; ++t)
       if (mark[t]) {
         sees[v].push_back(int(t));
@@ -78,6 +79,7 @@ std::vector<TaskView> prune_route(const MapContext& ctx, std::vector<TaskView> r
       const highlevel::Supervoxel* sv = targets[size_t(t)];
       if (std::find(k.targets.begin(), k.targets.end(), sv->key) != k.targets.end()) continue;
       k.targets.push_back(sv->key);
+      k.frontier = k.frontier || (!sv->facade() && at_frontier(ctx.map, *sv, o.region));
       if (sv->facade() && !k.facade) {  // a ground view that now observes a facade stops there
         k.facade = true;
         k.look_at = sv->center;

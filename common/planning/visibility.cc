@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/planning/frontier.h"
+
 namespace hexplore::planning {
 
 OcclusionGrid::OcclusionGrid(const highlevel::HighLevelMap& map, double cell_m) : cell_m_(cell_m) {
@@ -54,12 +56,17 @@ bool angles_ok(const ViewGeometry& g, const PlannerOptions& o, double margin_deg
          g.elevation_rad >= (o.theta_l_deg + margin) * kDegToRad && g.elevation_rad <= (o.theta_u_deg - margin) * kDegToRad;
 }
 
-double ground_view_score(const highlevel::Supervoxel& ground, const highlevel::Supervoxel& target, double range_m,
-                         const OcclusionGrid& occlusion, const PlannerOptions& o, int64_t& rays) {
-  if (!target.facade()) {
-    const double d = (ground.center - target.center).norm();
-    return d > o.ground_cover_radius_m ? 0.0 : 1.0 / (o.beta_l * d + 1e-3);
-  }
+double ground_target_score(const highlevel::HighLevelMap& map, const highlevel::Supervoxel& ground,
+                           const highlevel::Supervoxel& target, const PlannerOptions& o) {
+  if (ground.key != target.key && at_frontier(map, target, o.region)) return 0.0;
+  const double d = (ground.center - target.center).norm();
+  return d > o.ground_cover_radius_m ? 0.0 : 1.0 / (o.beta_l * d + 1e-3);
+}
+
+double ground_view_score(const highlevel::HighLevelMap& map, const highlevel::Supervoxel& ground,
+                         const highlevel::Supervoxel& target, double range_m, const OcclusionGrid& occlusion,
+                         const PlannerOptions& o, int64_t& rays) {
+  if (!target.facade()) return ground_target_score(map, ground, target, o);
   const Eigen::Vector3d sensor = ground.center + ground.normal.normalized() * o.sensor_height_m;
   const ViewGeometry geo = view_geometry(sensor, ground.normal, target.center, target.normal);
   if (geo.distance_m >= range_m || !angles_ok(geo, o, o.shared_view_margin_deg)) return 0.0;

@@ -57,11 +57,18 @@ inline double visibility_score(const ViewGeometry& g, const PlannerOptions& o) {
   return 1.0 / (o.beta_i * g.incidence_rad * kRadToDeg + o.beta_l * g.distance_m + 1e-9);
 }
 
+// How well standing on the ground supervoxel `ground` observes the ground target `target`:
+// within the composite radius 1 / (beta_l d), beyond it 0. Ground at the frontier of the known
+// ground (frontier.h) is observed only from its own vertex: beyond the rim is seen from the rim.
+double ground_target_score(const highlevel::HighLevelMap& map, const highlevel::Supervoxel& ground,
+                           const highlevel::Supervoxel& target, const PlannerOptions& o);
+
 // What a robot standing on the ground supervoxel `ground` scores for `target` (MNSS and route
 // pruning ask the same question): a facade target nearer than `range_m` from the sensor that
 // passes J (angles, then a line of sight through `occlusion`, counted in `rays`) scores Vis; a
-// ground target within the composite radius scores 1 / (beta_l d). 0: not seen.
-double ground_view_score(const highlevel::Supervoxel& ground, const highlevel::Supervoxel& target, double range_m,
-                         const OcclusionGrid& occlusion, const PlannerOptions& o, int64_t& rays);
+// ground target scores ground_target_score. 0: not seen.
+double ground_view_score(const highlevel::HighLevelMap& map, const highlevel::Supervoxel& ground,
+                         const highlevel::Supervoxel& target, double range_m, const OcclusionGrid& occlusion,
+                         const PlannerOptions& o, int64_t& rays);
 
 }  // namespace hexplore::planning
