@@ -7,6 +7,7 @@
 
 #include "common/core/team_config.h"
 #include "common/highlevel/supervoxel.h"
+#include "common/planning/frontier.h"
 #include "common/planning/mtsp/mtsp_problem.h"
 #include "common/planning/route_pruning.h"
 #include "common/planning/visibility.h"
@@ -90,6 +91,47 @@ TEST(Mnss, CoversEveryTargetWithFewerViews) {
     for (size_t i = 0; i < tour.size(); ++i) EXPECT_EQ(repeat[i].key, tour[i].key);
   }
   EXPECT_LT(total_after, total_before);
+}
+
+// Ground at the frontier of the known ground (here the synthetic grid's edge: the planning
+// map's rim, the region unbounded) is seen only from its own vertex: every tour view that holds
+// such a target stands on it and says so (`frontier`), so the robot drives onto the rim.
+TEST(Mnss, GroundAtTheFrontierIsSeenOnlyFromItsOwnVertex) {
+  OneBuilding b;
+  highlevel::HighLevelMap map(highlevel::species_levels(b.team), highlevel::clearance_options(b.team));
+  SyntheticSceneOptions scene;
+  scene.width_cells = 30;
+  scene.depth_cells = 20;
+  scene.buildings = {{5, 5, 14, 13, 5}};
+  scene.rubble = {};
+  map.apply(synthetic_scene(scene));
+  const MapContext ctx(map, b.o);
+  const auto views = generate_task_views(ctx, b.caps, b.o);
+  const auto clusters = cluster_views(views, b.o.eta_r_m);
+  int frontier_targets = 0;
+  for (const auto& cl : clusters) {
+    if (cl.label != kPublic) continue;
+    Rng rng(3);
+    const auto tour = mnss_tour(ctx, views, cl.views, {cl.center}, b.o.eta_r_m, b.caps.species[0],
+                                cl.center + Eigen::Vector3d(-8, 0, 0), std::nullopt, b.o, rng);
+    for (const auto& v : tour)
+      for (uint64_t t : v.targets) {
+        const highlevel::Supervoxel* sv = map.find(t);
+        if (!sv || sv->facade() || !at_frontier(map, *sv, b.o.region)) continue;
+        ++frontier_targets;
+        EXPECT_EQ(v.ground_key, t) << "a frontier target observed from another vertex";
+        EXPECT_TRUE(v.frontier);
+      }
+  }
+  EXPECT_GT(frontier_targets, 0);
+  // The score itself: its own vertex sees it, the next one (a metre in) does not.
+  for (const auto& [key, sv] : map.supervoxels()) {
+    if (!sv.traversable() || !at_frontier(map, sv, b.o.region)) continue;
+    EXPECT_GT(ground_target_score(map, sv, sv, b.o), 0.0);
+    for (const auto& [other, length] : map.graph().neighbours(key))
+      EXPECT_EQ(ground_target_score(map, *map.find(other), sv, b.o), 0.0);
+    break;
+  }
 }
 
 // With a shared-view margin, a spot stands in for another target's view only where it sees
