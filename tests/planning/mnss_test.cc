@@ -46,8 +46,10 @@ struct OneBuilding {
   }();
   TeamCapabilities caps = capabilities_from(team);
   PlannerOptions o = PlannerOptions::from(team.params);
-  highlevel::HighLevelMap map{highlevel::species_levels(team)};
-  OneBuilding() {
+  highlevel::HighLevelMap map;
+  // With clearance options the map is planning's: it knows the rim of the known ground.
+  explicit OneBuilding(bool planning_map = false)
+      : map(highlevel::species_levels(team), planning_map ? highlevel::clearance_options(team) : highlevel::ClearanceOptions{}) {
     SyntheticSceneOptions scene;
     scene.width_cells = 30;
     scene.depth_cells = 20;
@@ -97,14 +99,8 @@ TEST(Mnss, CoversEveryTargetWithFewerViews) {
 // map's rim, the region unbounded) is seen only from its own vertex: every tour view that holds
 // such a target stands on it and says so (`frontier`), so the robot drives onto the rim.
 TEST(Mnss, GroundAtTheFrontierIsSeenOnlyFromItsOwnVertex) {
-  OneBuilding b;
-  highlevel::HighLevelMap map(highlevel::species_levels(b.team), highlevel::clearance_options(b.team));
-  SyntheticSceneOptions scene;
-  scene.width_cells = 30;
-  scene.depth_cells = 20;
-  scene.buildings = {{5, 5, 14, 13, 5}};
-  scene.rubble = {};
-  map.apply(synthetic_scene(scene));
+  OneBuilding b(/*planning_map=*/true);
+  const highlevel::HighLevelMap& map = b.map;
   const MapContext ctx(map, b.o);
   const auto views = generate_task_views(ctx, b.caps, b.o);
   const auto clusters = cluster_views(views, b.o.eta_r_m);
