@@ -25,6 +25,7 @@ struct Seen {
   double score;
   bool facade;
   Eigen::Vector3d center;
+  bool frontier = false;  // ground at the frontier of the known ground (seen from its own vertex only)
 };
 
 }  // namespace
@@ -74,7 +75,7 @@ std::vector<CandidateView> candidate_views(const MapContext& ctx, const std::vec
         } else {
           const double score = ground_target_score(ctx.map, *g, *sv, o);
           if (score <= 0.0) continue;
-          seen.push_back({t, 1, score, false, sv->center});
+          seen.push_back({t, 1, score, false, sv->center, at_frontier(ctx.map, *sv, o.region)});
         }
       }
     if (seen.empty()) continue;
@@ -92,7 +93,7 @@ std::vector<CandidateView> candidate_views(const MapContext& ctx, const std::vec
       for (const Seen& s : seen) {
         if (s.requirement > level) continue;
         c.view.targets.push_back(s.target);
-        c.view.frontier = c.view.frontier || (!s.facade && at_frontier(ctx.map, *ctx.map.find(s.target), o.region));
+        c.view.frontier = c.view.frontier || s.frontier;
         c.quality += s.score;
         if (s.facade && s.score > best) {
           best = s.score;

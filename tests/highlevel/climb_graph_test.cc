@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/core/team_config.h"
+#include "common/highlevel/clearance.h"
 #include "common/highlevel/high_level_map.h"
 #include "common/highlevel/map_proto.h"
 #include "common/highlevel/segmenter.h"
@@ -138,11 +140,9 @@ TEST(ClimbGraph, RampBCrestIsAFrontierUntilTheRobotIsNearlyAtTheTop) {
   const auto& ramp_b = climbs[2];
   ASSERT_EQ(ramp_b.name.substr(0, 6), "ramp B");
   const std::vector<core::SpeciesConfig> team = {core::builtin_slugcat(), core::builtin_mr1000()};
-  highlevel::ClearanceOptions clearance;
-  for (const auto& s : team) {
-    clearance.body_radius_m.push_back(s.body_half_extents_m.head<2>().norm());
-    clearance.body_half_width_m.push_back(s.body_half_extents_m.y());
-  }
+  core::TeamConfig team_config;
+  team_config.species = team;
+  const highlevel::ClearanceOptions clearance = highlevel::clearance_options(team_config);  // planning's map
   const Eigen::AlignedBox3d region(Eigen::Vector3d(-2, -5, -0.5), Eigen::Vector3d(34, 27, 7.5));  // multi-storey.yaml
   const Eigen::Vector3d crest(17.77, 20.5, 6.0), roof(15.5, 20.5, 6.0);
 
