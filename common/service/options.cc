@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+
+#include "common/service/option_catalogue.h"
 
 namespace hexplore::service {
 namespace {
@@ -19,8 +22,14 @@ std::string bound(double v) {
 OptionError::OptionError(const std::string& key, const std::string& problem)
     : core::ConfigError("command line", "--" + key, problem) {}
 
+Options::Arguments::const_iterator Options::find(const std::string& key) const {
+  if (!is_service_option(key))
+    throw std::logic_error("a service reads --" + key + ", which is not in common/service/option_catalogue.cc");
+  return args_.find(key);
+}
+
 double Options::number(const std::string& key, double fallback, double min, double max) const {
-  const auto it = args_.find(key);
+  const auto it = find(key);
   if (it == args_.end()) return fallback;
   double v = 0.0;
   size_t used = 0;
@@ -56,7 +65,7 @@ int Options::integer(const std::string& key, int fallback, int min, int max) con
 }
 
 bool Options::flag(const std::string& key, bool fallback) const {
-  const auto it = args_.find(key);
+  const auto it = find(key);
   if (it == args_.end()) return fallback;
   const std::string& s = it->second;
   if (s == "true" || s == "1" || s == "yes") return true;
@@ -65,13 +74,13 @@ bool Options::flag(const std::string& key, bool fallback) const {
 }
 
 std::string Options::text(const std::string& key, const std::string& fallback) const {
-  const auto it = args_.find(key);
+  const auto it = find(key);
   return it == args_.end() ? fallback : it->second;
 }
 
 std::string Options::choice(const std::string& key, const std::string& fallback,
                             std::initializer_list<const char*> words) const {
-  const auto it = args_.find(key);
+  const auto it = find(key);
   if (it == args_.end()) return fallback;
   std::string listed;
   for (const char* w : words) {

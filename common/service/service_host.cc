@@ -6,6 +6,7 @@
 #include "common/core/config_error.h"
 #include "common/core/log.h"
 #include "common/metrics/prometheus_registry.h"
+#include "common/service/option_catalogue.h"
 #include "common/service/service.h"
 
 namespace hexplore::service {
@@ -37,6 +38,7 @@ transport::SocketOptions ServiceHost::publisher_options(const ServiceContext& ct
 
 ServiceHost::ServiceHost(core::TeamConfig team, HostOptions options)
     : team_(std::move(team)), options_(std::move(options)) {
+  require_service_options(options_.arguments);  // a typo must not run a mission without its option
   if (options_.compose) team_.transport.scheme = "inproc";
   auto registry = std::make_unique<metrics::PrometheusRegistry>();
   registry_ = std::move(registry);

@@ -12,6 +12,7 @@
 
 #include "common/core/config_error.h"
 #include "common/core/log.h"
+#include "common/service/option_catalogue.h"
 #include "common/service/service.h"
 
 namespace hexplore::service {
@@ -114,7 +115,7 @@ int run(int argc, char** argv, const std::vector<ServiceFactory>& factories, boo
   CommandLine cl;
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      std::cout << usage << "\n";
+      std::cout << usage << "\n\nservice options (each read by the services named):\n" << service_options_help();
       return 0;
     }
   }

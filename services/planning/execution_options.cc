@@ -17,7 +17,7 @@ ExecutionOptions execution_options(const service::Options& opts, const core::Spe
   follow.observe_reach_m = opts.positive("observe-reach-m", follow.observe_reach_m);
   follow.blocked_s = opts.positive("blocked-s", follow.blocked_s);
   follow.stuck_s = opts.positive("stuck-s", follow.stuck_s);
-  follow.settle_s = opts.positive("settle-s", follow.settle_s);
+  follow.settle_s = opts.positive("judge-lag-s", follow.settle_s);
   follow.min_aim_s = opts.positive("min-aim-s", follow.min_aim_s);
   follow.keep_stretch_m = opts.positive("keep-stretch-m", follow.keep_stretch_m);
   follow.switch_gain_m = opts.positive("switch-gain-m", follow.switch_gain_m);

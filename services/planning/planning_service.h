@@ -45,13 +45,8 @@ namespace hexplore::planning_service {
 class PlanningService : public service::Service {
  public:
   core::ServiceKind kind() const override { return core::ServiceKind::kPlanning; }
-  // Options (after --config/--robot): --wait-for-start true|false (default false),
-  // --cycle-ms N (trigger check period, default 200), --min-replan-s X (default 1.0),
-  // --peer-timeout-s X (default params.liveness.planning_team_s), --peer-stuck-s X (default 30.0); the
-  // follower's --reach-m X (1.0), --blocked-s X (2.0), --stuck-s X (8.0), --settle-s X (2.0),
-  // --keep-stretch-m X (5.0; under --reach-m keeps only the leg), --observe true|false (dwell at facade views, default true); the ledger's
-  // --give-up-views N (1) and --give-up-attempts N (3); --trace-dir DIR (per-round traces) and
-  // --trace-graph-period-s S (with it: the topology graph as graph-<robot>-<t>.ply every S s; 0 off).
+  // Its options (--trace-dir, --reach-m, --give-up-views, ...) are listed with their defaults
+  // in common/service/option_catalogue.cc.
   void setup(service::ServiceContext& context) override;
   void fill_status(v1::ServiceStatus& status) override;
 

@@ -81,7 +81,7 @@ StationOptions StationOptions::from_arguments(const std::map<std::string, std::s
   o.results_dir = opts.text("results", o.results_dir);
   o.snapshot_period_s = opts.number("snapshot-period-s", o.snapshot_period_s, 0.0);
   o.start_wait_s = opts.number("start-wait-s", o.start_wait_s, 0.0);
-  o.settle_s = opts.number("settle-s", o.settle_s, 0.0);
+  o.settle_s = opts.number("end-settle-s", o.settle_s, 0.0);
   o.progress_period_s = opts.number("progress-period-s", o.progress_period_s, 0.0);
   o.open_targets_period_s = opts.number("open-targets-period-s", o.open_targets_period_s, 0.0);
   o.autostart = opts.flag("autostart", o.autostart);

@@ -77,6 +77,22 @@ TEST(ExperimentArgs, BadComparisonsAreNamed) {
   EXPECT_NE(message({"--config", "t", "--seeds", "1", "--report", "yes"}).find("--report"), std::string::npos);
 }
 
+// --out for --results once ran a whole mission, its results in the default folder.
+TEST(ExperimentArgs, AnOptionNoServiceReadsIsRefusedWithTheNearestName) {
+  try {
+    parse({"--config", "t.yaml", "--seeds", "1", "--out", "dir"});
+    ADD_FAILURE() << "accepted --out";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--out is no service's option"), std::string::npos) << e.what();
+  }
+  try {
+    parse({"--config", "t.yaml", "--seeds", "1", "--trace-dri", "T"});
+    ADD_FAILURE() << "accepted --trace-dri";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean --trace-dir?"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ExperimentArgs, MissingPiecesAreErrors) {
   EXPECT_THROW(parse({"--seeds", "1"}), std::invalid_argument);
   EXPECT_THROW(parse({"--config", "t.yaml"}), std::invalid_argument);

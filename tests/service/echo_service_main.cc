@@ -6,10 +6,15 @@
 #include <cstring>
 #include <iostream>
 
+#include "common/service/option_catalogue.h"
 #include "tests/service/echo_service.h"
 
 int main(int argc, char** argv) {
   using namespace hexplore;
+  // Its own options, beside hexplore's services' (a host refuses options no service reads).
+  service::add_service_options({{"composed", "echo", "yes: hlmap and planning echo services for every --robot"},
+                                {"kind", "echo", "the service kind it stands in for (mapping)"},
+                                {"throw-after-ms", "echo", "a callback throws after this long (the failure exit code)"}});
   core::ServiceKind kind = core::ServiceKind::kMapping;
   for (int i = 1; i + 1 < argc; ++i) {
     if (std::strcmp(argv[i], "--composed") == 0 && std::strcmp(argv[i + 1], "yes") == 0) {

@@ -28,6 +28,7 @@
 #include "common/core/config_error.h"
 #include "common/core/log.h"
 #include "common/planning/planner_registry.h"
+#include "common/service/option_catalogue.h"
 #include "common/service/service.h"
 #include "common/evaluation/report_script.h"
 #include "common/evaluation/results_writer.h"
@@ -267,7 +268,7 @@ int run(int argc, char** argv) {
   try {
     args = parse_experiment_args(argc, argv);
     if (args.help) {
-      std::cout << kUsage;
+      std::cout << kUsage << "\nservice options (each read by the services named):\n" << service::service_options_help();
       return 0;
     }
     core::LogLevel level;
