@@ -70,7 +70,7 @@ std::vector<CandidateView> candidate_views(const MapContext& ctx, const std::vec
           const ViewGeometry geo = view_geometry(sensor, g->normal, sv->center, sv->normal);
           if (geo.distance_m >= max_range || !angles_ok(geo, o, o.shared_view_margin_deg)) continue;
           const int req = observation_requirement((g->center - sv->center).norm(), team);
-          if (req == 0 || !ctx.occlusion.clear(sensor, sv->center)) continue;
+          if (req == 0 || !ctx.occlusion.clear(sensor, *sv)) continue;
           seen.push_back({t, req, visibility_score(geo, o), true, sv->center});
         } else {
           const double score = ground_target_score(ctx.map, *g, *sv, o);

@@ -21,7 +21,7 @@ bool PassingObserver::in_view(const highlevel::Supervoxel& sv, const Eigen::Vect
   if (g.elevation_rad < passing_.elevation_min_deg * kDegToRad || g.elevation_rad > passing_.elevation_max_deg * kDegToRad)
     return false;
   if (!angles_ok(g, planner_, planner_.shared_view_margin_deg)) return false;
-  return occlusion.clear(sensor, sv.center);
+  return occlusion.clear(sensor, sv);
 }
 
 void PassingObserver::step(double now_s, const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,

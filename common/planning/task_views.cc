@@ -101,7 +101,7 @@ bool best_facade_view(const MapContext& ctx, const highlevel::Supervoxel& target
       continue;
     if (rays) ++*rays;
     const Eigen::Vector3d sensor = s.ground->center + s.ground->normal.normalized() * o.sensor_height_m;
-    if (!ctx.occlusion.clear(sensor, target.center)) continue;
+    if (!ctx.occlusion.clear(sensor, target)) continue;
     view = TaskView{};
     view.key = target.key;
     view.ground_key = s.ground->key;

@@ -8,23 +8,48 @@
 namespace hexplore::planning {
 
 OcclusionGrid::OcclusionGrid(const highlevel::HighLevelMap& map, double cell_m) : cell_m_(cell_m) {
-  for (const auto& [key, sv] : map.supervoxels())
-    if (sv.facade()) cells_.insert(core::seed_key(core::cell_of(sv.center, cell_m_)));
+  const double reach = kPlateRadiusCells * cell_m_;
+  for (const auto& [key, sv] : map.supervoxels()) {
+    if (!sv.facade() || sv.normal.norm() < 1e-9) continue;
+    const auto index = static_cast<uint32_t>(plates_.size());
+    plates_.push_back({sv.center, sv.normal.normalized()});
+    const core::GridCell lo = core::cell_of(sv.center - Eigen::Vector3d::Constant(reach), cell_m_);
+    const core::GridCell hi = core::cell_of(sv.center + Eigen::Vector3d::Constant(reach), cell_m_);
+    for (int32_t x = lo.x; x <= hi.x; ++x)
+      for (int32_t y = lo.y; y <= hi.y; ++y)
+        for (int32_t z = lo.z; z <= hi.z; ++z) cells_[core::seed_key({x, y, z})].push_back(index);
+  }
 }
 
-bool OcclusionGrid::clear(const Eigen::Vector3d& from, const Eigen::Vector3d& target) const {
+bool OcclusionGrid::clear(const Eigen::Vector3d& from, const highlevel::Supervoxel& target_sv) const {
+  const Eigen::Vector3d& target = target_sv.center;
+  const Eigen::Vector3d target_normal =
+      target_sv.normal.norm() > 1e-9 ? Eigen::Vector3d(target_sv.normal.normalized()) : Eigen::Vector3d::Zero();
   const Eigen::Vector3d d = target - from;
   const double len = d.norm();
-  if (len <= cell_m_) return true;
-  // Sample at a third of a cell: a ray cannot skip a cell it crosses by more than that.
+  if (len <= kTargetMarginM) return true;
+  const Eigen::Vector3d u = d / len;
+  const double stop = len - kTargetMarginM;
+  const double reach2 = std::pow(kPlateRadiusCells * cell_m_, 2);
+  auto crosses = [&](const Plate& p) {
+    if (p.normal.dot(target_normal) > kOwnSurfaceCos && (p.center - target).norm() < cell_m_) return false;
+    const double facing = p.normal.dot(u);
+    if (std::abs(facing) < 1e-9) return false;  // the ray runs along the plate
+    const double t = p.normal.dot(p.center - from) / facing;
+    return t > 0.0 && t < stop && (from + u * t - p.center).squaredNorm() <= reach2;
+  };
+  // Visit the cells along the ray at a third of a cell: a ray cannot skip a cell it crosses by
+  // more than that, and a plate is listed in every cell it reaches into.
   const double step = cell_m_ / 3.0;
-  const double stop = len - cell_m_;  // the target's own patch does not occlude it
   uint64_t last = ~uint64_t{0};
-  for (double t = step; t < stop; t += step) {
-    const uint64_t key = core::seed_key(core::cell_of(from + d * (t / len), cell_m_));
+  for (double t = 0.0; t < stop + step; t += step) {
+    const uint64_t key = core::seed_key(core::cell_of(from + u * std::min(t, stop), cell_m_));
     if (key == last) continue;
     last = key;
-    if (cells_.count(key)) return false;
+    const auto it = cells_.find(key);
+    if (it == cells_.end()) continue;
+    for (const uint32_t i : it->second)
+      if (crosses(plates_[i])) return false;
   }
   return true;
 }
@@ -71,7 +96,7 @@ double ground_view_score(const highlevel::HighLevelMap& map, const highlevel::Su
   const ViewGeometry geo = view_geometry(sensor, ground.normal, target.center, target.normal);
   if (geo.distance_m >= range_m || !angles_ok(geo, o, o.shared_view_margin_deg)) return 0.0;
   ++rays;
-  return occlusion.clear(sensor, target.center) ? visibility_score(geo, o) : 0.0;
+  return occlusion.clear(sensor, target) ? visibility_score(geo, o) : 0.0;
 }
 
 }  // namespace hexplore::planning

@@ -1,12 +1,12 @@
 #pragma once
 // The visibility function J and score Vis of the paper ("Task-View Generation") over the
 // supervoxel map: a line of sight is blocked by facade supervoxels (walls, obstacles), each
-// taken as its eta_s grid cell; ground is treated as non-occluding because views are lifted
-// to sensor height above it.
+// taken as a plate through its centre across its normal, as wide as its eta_s cell; ground is
+// treated as non-occluding because views are lifted to sensor height above it.
 
 #include <cmath>
 #include <cstdint>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -20,17 +20,37 @@ namespace hexplore::planning {
 inline constexpr double kDegToRad = M_PI / 180.0;
 inline constexpr double kRadToDeg = 180.0 / M_PI;
 
+// Plates rather than whole cells: a cell of a building's wall beside a window holds the wall's
+// outer face and the window's reveals, and a cube that blocks every ray through it must spare
+// the last cell before the target, or no reveal is ever seen; sparing it let rays through the
+// wall itself, and the MR1000 stood where the building hid a third of what it came to look at
+// (common/planning/README.md, "Lines of sight through the wall beside a window").
 class OcclusionGrid {
  public:
   OcclusionGrid(const highlevel::HighLevelMap& map, double cell_m);
-  // True when the segment from `from` to `target` crosses no occupied cell except cells
-  // within one cell size of the target (its own wall patch).
-  bool clear(const Eigen::Vector3d& from, const Eigen::Vector3d& target) const;
-  size_t occupied_cells() const { return cells_.size(); }
+  // True when the segment from `from` to the centre of `target` crosses no plate before it
+  // arrives within kTargetMarginM of it, except plates of the target's own surface: within a
+  // cell of it and facing within 60 deg of its way (a surface's supervoxels are not exactly
+  // coplanar; at a corner they overlap). A wall beside a window reveal faces another way.
+  bool clear(const Eigen::Vector3d& from, const highlevel::Supervoxel& target) const;
+  size_t plates() const { return plates_.size(); }
+
+  // A plate reaches this far from its centre, in units of the cell: past half the cell's
+  // diagonal (0.71), so that a wall's plates, one per cell, leave no gap between four of them.
+  static constexpr double kPlateRadiusCells = 0.75;
+  static constexpr double kTargetMarginM = 0.15;
+  static constexpr double kOwnSurfaceCos = 0.5;
 
  private:
+  struct Plate {
+    Eigen::Vector3d center;
+    Eigen::Vector3d normal;  // unit
+  };
+
   double cell_m_;
-  std::unordered_set<uint64_t> cells_;
+  std::vector<Plate> plates_;
+  // Every cell a plate's bounding box touches, with the plates that reach into it.
+  std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
 };
 
 // Geometry of one (view, target) pair.

@@ -100,7 +100,7 @@ TEST(TaskViews, FacadeViewsAreVisibleAndRespectRequirements) {
     if (v.facade) {
       const auto* t = f.map.find(v.key);
       ASSERT_TRUE(t && t->facade() && !t->covered);
-      EXPECT_TRUE(ctx.occlusion.clear(g->center + Eigen::Vector3d(0, 0, f.options.sensor_height_m), t->center));
+      EXPECT_TRUE(ctx.occlusion.clear(g->center + Eigen::Vector3d(0, 0, f.options.sensor_height_m), *t));
       EXPECT_LT((t->center - g->center).norm(), f.caps.max_observation_range() + 1.0);
     }
   }

@@ -52,11 +52,12 @@ highlevel::MapUpdate synthetic_scene(const SyntheticSceneOptions& o) {
         if (y == b.y0) n.y() -= 1;
         if (y == b.y1) n.y() += 1;
         n.normalize();
-        // Each wall cell has an outer face and an inner one (one facing per supervoxel).
+        // Each wall cell has an outer face and an inner one (one facing per supervoxel), each on
+        // the side it faces: a wall 0.2 cells thick.
         for (int z = door.count({x, y}) ? 2 : 0; z < b.floors_m; ++z)
           for (const Eigen::Vector3d& face : {n, Eigen::Vector3d(-n)}) {
             Supervoxel sv;
-            sv.center = Eigen::Vector3d((x + 0.5) * c, (y + 0.5) * c, (z + 0.5) * c) - 0.1 * c * face;
+            sv.center = Eigen::Vector3d((x + 0.5) * c, (y + 0.5) * c, (z + 0.5) * c) + 0.1 * c * face;
             sv.normal = face;
             sv.surface = SurfaceClass::kFacade;
             sv.key = highlevel::supervoxel_key(core::cell_of(sv.center, c), sv.surface,
