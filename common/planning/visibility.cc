@@ -13,8 +13,12 @@ OcclusionGrid::OcclusionGrid(const highlevel::HighLevelMap& map, double cell_m) 
     if (!sv.facade() || sv.normal.norm() < 1e-9) continue;
     const auto index = static_cast<uint32_t>(plates_.size());
     plates_.push_back({sv.center, sv.normal.normalized()});
-    const core::GridCell lo = core::cell_of(sv.center - Eigen::Vector3d::Constant(reach), cell_m_);
-    const core::GridCell hi = core::cell_of(sv.center + Eigen::Vector3d::Constant(reach), cell_m_);
+    // The disk's own bounding box: a wall's plate is flat across its normal, so it reaches into
+    // one layer of cells there, not three.
+    const Eigen::Vector3d& n = plates_.back().normal;
+    const Eigen::Vector3d half = reach * (Eigen::Vector3d::Ones() - n.cwiseAbs2()).cwiseMax(0.0).cwiseSqrt();
+    const core::GridCell lo = core::cell_of(sv.center - half, cell_m_);
+    const core::GridCell hi = core::cell_of(sv.center + half, cell_m_);
     for (int32_t x = lo.x; x <= hi.x; ++x)
       for (int32_t y = lo.y; y <= hi.y; ++y)
         for (int32_t z = lo.z; z <= hi.z; ++z) cells_[core::seed_key({x, y, z})].push_back(index);

@@ -49,7 +49,7 @@ class OcclusionGrid {
 
   double cell_m_;
   std::vector<Plate> plates_;
-  // Every cell a plate's bounding box touches, with the plates that reach into it.
+  // Every cell a plate reaches into, with the plates that reach into it.
   std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
 };
 
