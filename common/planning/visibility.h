@@ -20,18 +20,18 @@ namespace hexplore::planning {
 inline constexpr double kDegToRad = M_PI / 180.0;
 inline constexpr double kRadToDeg = 180.0 / M_PI;
 
-// Plates rather than whole cells: a cell of a building's wall beside a window holds the wall's
-// outer face and the window's reveals, and a cube that blocks every ray through it must spare
-// the last cell before the target, or no reveal is ever seen; sparing it let rays through the
-// wall itself, and the MR1000 stood where the building hid a third of what it came to look at
-// (common/planning/README.md, "Lines of sight through the wall beside a window").
+// Plates rather than whole cells: a cube that blocks every ray through it must spare the last
+// cell before the target, or a target's own wall patch hides it; sparing it let rays through
+// the wall the target is on (the inside face of an outer wall was "seen" from outside), and six
+// in ten of the MR1000's looks were at targets the scene hid from the spot (common/planning/
+// README.md, "Lines of sight through the wall: plates, not cells").
 class OcclusionGrid {
  public:
   OcclusionGrid(const highlevel::HighLevelMap& map, double cell_m);
   // True when the segment from `from` to the centre of `target` crosses no plate before it
   // arrives within kTargetMarginM of it, except plates of the target's own surface: within a
   // cell of it and facing within 60 deg of its way (a surface's supervoxels are not exactly
-  // coplanar; at a corner they overlap). A wall beside a window reveal faces another way.
+  // coplanar; at a corner they overlap). The wall in front of an inside face faces the other way.
   bool clear(const Eigen::Vector3d& from, const highlevel::Supervoxel& target) const;
   size_t plates() const { return plates_.size(); }
 
