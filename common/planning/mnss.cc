@@ -133,7 +133,7 @@ std::vector<TaskView> mnss_tour(const MapContext& ctx, const std::vector<TaskVie
     for (const auto& [t, s] : sees[c]) {
       if (!covered_now[size_t(t)]) continue;
       v.targets.push_back(targets[size_t(t)]->key);
-      v.frontier = v.frontier || (!targets[size_t(t)]->facade() && at_frontier(ctx.map, *targets[size_t(t)], o.region));
+      v.frontier = v.frontier || at_frontier(ctx.map, *targets[size_t(t)], o.region);  // false for facades
       if (targets[size_t(t)]->facade() && s > best) {
         best = s;
         v.look_at = targets[size_t(t)]->center;

@@ -79,7 +79,7 @@ std::vector<TaskView> prune_route(const MapContext& ctx, std::vector<TaskView> r
       const highlevel::Supervoxel* sv = targets[size_t(t)];
       if (std::find(k.targets.begin(), k.targets.end(), sv->key) != k.targets.end()) continue;
       k.targets.push_back(sv->key);
-      k.frontier = k.frontier || (!sv->facade() && at_frontier(ctx.map, *sv, o.region));
+      k.frontier = k.frontier || at_frontier(ctx.map, *sv, o.region);  // false for facades
       if (sv->facade() && !k.facade) {  // a ground view that now observes a facade stops there
         k.facade = true;
         k.look_at = sv->center;
