@@ -38,6 +38,7 @@ uint64_t ClearanceIndex::cell_key(const Eigen::Vector3d& p) const {
 
 void ClearanceIndex::insert(const Supervoxel& sv) {
   cells_[cell_key(sv.center)].push_back({sv.key, sv.center, sv.normal, sv.facade()});
+  invalidate_rims_near(sv.center);
 }
 
 void ClearanceIndex::erase(const Supervoxel& sv) {
@@ -46,6 +47,29 @@ void ClearanceIndex::erase(const Supervoxel& sv) {
   auto& v = it->second;
   v.erase(std::remove_if(v.begin(), v.end(), [&](const Entry& e) { return e.key == sv.key; }), v.end());
   if (v.empty()) cells_.erase(it);
+  rim_cache_.erase(sv.key);
+  invalidate_rims_near(sv.center);
+}
+
+double ClearanceIndex::rim_reach_m() const {
+  const double step = options_.ground_spacing_m;
+  return std::max(std::hypot(1.75, 0.75) * step, step + options_.facade_half_extent_m) + 1e-6;
+}
+
+void ClearanceIndex::invalidate_rims_near(const Eigen::Vector3d& p) {
+  if (rim_cache_.empty()) return;
+  const double reach = rim_reach_m();
+  for_each_near(p, reach, [&](const Entry& e) {
+    if (!e.facade && (e.center.head<2>() - p.head<2>()).norm() <= reach) rim_cache_.erase(e.key);
+  });
+}
+
+uint8_t ClearanceIndex::cached_open_sides(const Entry& g) const {
+  const auto it = rim_cache_.find(g.key);
+  if (it != rim_cache_.end()) return it->second;
+  const uint8_t open = open_sides(g);
+  rim_cache_.emplace(g.key, open);
+  return open;
 }
 
 template <typename F>
@@ -128,7 +152,7 @@ uint8_t ClearanceIndex::open_sides(const Supervoxel& ground) const {
 
 void ClearanceIndex::add_rims(const Entry& g, std::vector<Patch>& out) const {
   const double step = options_.ground_spacing_m;
-  const uint8_t open = open_sides(g);
+  const uint8_t open = cached_open_sides(g);
   for (int i = 0; i < kRimSideCount; ++i) {
     if ((open & (1u << i)) == 0) continue;
     Patch rim;
