@@ -257,7 +257,11 @@ void MappingService::publish_delta(const v1::VoxelDelta& delta) {
   delta_bytes_->increment(static_cast<double>(delta.ByteSizeLong()));
   delta_voxel_count_ += delta.voxels_size();
   delta_payload_bytes_ += static_cast<double>(delta.ByteSizeLong());
-  map_bytes_->set(static_cast<double>(map_->memory_bytes()));
+  const int64_t now_ns = context_->now_ns();
+  if (now_ns - map_bytes_at_ns_ >= kMapBytesPeriodNs || now_ns < map_bytes_at_ns_) {
+    map_bytes_->set(static_cast<double>(map_->memory_bytes()));
+    map_bytes_at_ns_ = now_ns;
+  }
 }
 
 void MappingService::publish_changes() {
