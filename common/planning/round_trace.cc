@@ -50,7 +50,7 @@ std::string round_trace_json(const RoundTrace& round, const PlanRequest& req, co
   j << "], \"follower\": {\"reached\": " << f.views_reached << ", \"observed\": " << f.views_observed
     << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
     << ", \"cut_off\": " << f.views_cut_off
-    << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short << ", \"stood_in\": " << f.views_stood_in
+    << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
     << ", \"legs_kept\": " << f.legs_kept << ", \"legs_switched\": " << f.legs_switched << ", \"stretch_views_kept\": " << f.stretch_views_kept << ", \"passing_observations\": " << round.passing_observations
     << ", \"observing_s\": " << f.observing_s << ", \"targets_judged\": " << f.targets_judged
     << ", \"targets_complete_when_judged\": " << f.targets_complete_when_judged << ", \"next\": [";

@@ -83,7 +83,7 @@ void RouteFollower::set_route(std::vector<TaskView> route, const Eigen::Vector3d
   progress_s_ = -1.0;
   // An observation in progress is finished first (the cost model paid for it); views of the
   // new route at the spot being observed are part of it.
-  while (observing_ && next_ < route_.size() && reached(route_[next_], observe_spot_, map)) {
+  while (observing_ && next_ < route_.size() && reached(route_[next_], observe_spot_)) {
     const TaskView& view = route_[next_++];
     for (uint64_t t : view.targets) {
       if (std::find(observed_targets_.begin(), observed_targets_.end(), t) != observed_targets_.end()) continue;
@@ -107,17 +107,8 @@ double RouteFollower::path_length(const Eigen::Vector3d& from, const TaskView& v
   return length;
 }
 
-bool RouteFollower::reached(const TaskView& view, const Eigen::Vector3d& position,
-                            const highlevel::HighLevelMap& map) const {
-  const double reach = view.facade || view.frontier ? options_.observe_reach_m : options_.reach_m;
-  if (horizontal(view.position, position) <= reach) return true;
-  // A path ends where the species' body clears what the map knows around the view's vertex,
-  // up to half a metre off it (ClearanceOptions::max_shift_m): the spot as this robot can
-  // stand on it. Measured from the vertex alone, a robot at the end of its path was short
-  // and stood until it gave the view up as stuck (default team: a third of the skips came
-  // 0.4-0.5 m from the view).
-  const auto stand = map.graph().waypoint(view.ground_key, species_);
-  return stand && horizontal(*stand, position) <= reach;
+bool RouteFollower::reached(const TaskView& view, const Eigen::Vector3d& position) const {
+  return horizontal(view.position, position) <= (view.facade || view.frontier ? options_.observe_reach_m : options_.reach_m);
 }
 
 void RouteFollower::keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch) {
@@ -219,7 +210,7 @@ std::optional<MotionOrder> RouteFollower::next_order(double now_s, const Eigen::
     driving_ = false;
   }
   if (next_ >= route_.size()) return std::nullopt;
-  if (reached(route_[next_], position, map)) {
+  if (reached(route_[next_], position)) {
     std::optional<MotionOrder> order = begin_observing(now_s, position, map, ledger);
     return observing_ ? order : drive(position, map, keep_off, ledger);  // ground views: on to the next
   }
@@ -227,39 +218,8 @@ std::optional<MotionOrder> RouteFollower::next_order(double now_s, const Eigen::
   const bool blocked = blocked_since_s_ >= 0.0 && now_s - blocked_since_s_ >= options_.blocked_s;
   const bool stuck = progress_s_ >= 0.0 && now_s - progress_s_ >= options_.stuck_s;
   if (!blocked && !stuck) return std::nullopt;
-  if (stand_in(now_s, position, map, ledger)) {
-    leave_blocked_spot(position);
-    return aim(0, position);
-  }
   skip_current(position, map, ledger);
   return drive(position, map, keep_off, ledger);
-}
-
-bool RouteFollower::stand_in(double now_s, const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
-                             GiveUpLedger& ledger) {
-  if (next_ >= route_.size() || options_.sight_range_m <= 0.0 || options_.observation_time_s <= 0.0) return false;
-  const TaskView& view = route_[next_];
-  if (!view.facade || horizontal(view.position, position) > options_.stand_in_m) return false;
-  const OcclusionGrid occlusion(map, options_.sight.eta_s_m);
-  std::vector<uint64_t> seen, missed;
-  for (uint64_t t : view.targets) {
-    if (!open_target(t, map, ledger, options_.region) || awaiting_judgement(t, position, ledger.rules().distinct_m)) continue;
-    const highlevel::Supervoxel* sv = map.find(t);
-    const bool in_sight = sv->facade() ? sees_facade(position, *sv, options_.sight_range_m, occlusion, options_.sight)
-                                       : horizontal(sv->center, position) <= options_.reach_m;
-    (in_sight ? seen : missed).push_back(t);
-  }
-  if (std::none_of(seen.begin(), seen.end(), [&](uint64_t t) { return map.find(t)->facade(); })) return false;
-  for (uint64_t t : missed) ledger.failed(t, map.find(t)->voxel_count);
-  observed_targets_ = seen;
-  aims_.clear();
-  for (uint64_t t : seen) add_aim(t, map);
-  ++counters_.views_reached;
-  ++counters_.views_stood_in;
-  ++next_;
-  blocked_since_s_ = -1.0;
-  blocked_seen_ = false;
-  return start_dwell(now_s, position, 1).has_value();
 }
 
 std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Eigen::Vector3d& position,
@@ -270,7 +230,7 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
   observed_targets_.clear();
   aims_.clear();
   int facade_views = 0;
-  for (; next_ < route_.size() && reached(route_[next_], position, map); ++next_) {
+  for (; next_ < route_.size() && reached(route_[next_], position); ++next_) {
     const TaskView& v = route_[next_];
     ++counters_.views_reached;
     const size_t aims_before = aims_.size();
@@ -283,10 +243,6 @@ std::optional<MotionOrder> RouteFollower::begin_observing(double now_s, const Ei
     }
     if (aims_.size() > aims_before) ++facade_views;
   }
-  return start_dwell(now_s, position, facade_views);
-}
-
-std::optional<MotionOrder> RouteFollower::start_dwell(double now_s, const Eigen::Vector3d& position, int facade_views) {
   driving_ = false;
   if (aims_.empty() || options_.observation_time_s <= 0.0) {  // ground views: observed on arrival
     aims_.clear();
@@ -380,8 +336,6 @@ std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position,
         ++counters_.views_cut_off;
         continue;
       }
-      // No way onto the spot, but near enough to look from here.
-      if (stand_in(last_step_s_, position, map, ledger)) return aim(0, position);
       // No way there from here for us (maybe only around a spot we were blocked at): skip it
       // without counting it against the target, which a teammate may reach.
       ++counters_.views_without_path;
@@ -407,16 +361,6 @@ std::optional<MotionOrder> RouteFollower::drive(const Eigen::Vector3d& position,
 
 void RouteFollower::skip_current(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
                                  GiveUpLedger& ledger) {
-  leave_blocked_spot(position);
-  fail_targets(route_[next_], map, ledger);
-  ++counters_.views_skipped;
-  ++next_;
-  driving_ = false;
-  blocked_since_s_ = -1.0;
-  blocked_seen_ = false;
-}
-
-void RouteFollower::leave_blocked_spot(const Eigen::Vector3d& position) {
   if (blocked_seen_ || blocked_since_s_ >= 0.0) {
     // Keep off the vertex we were driving to when blocked: the path point after the one nearest to us.
     size_t near = 0;
@@ -434,6 +378,12 @@ void RouteFollower::leave_blocked_spot(const Eigen::Vector3d& position) {
       backoff_ = *it;
       break;
     }
+  fail_targets(route_[next_], map, ledger);
+  ++counters_.views_skipped;
+  ++next_;
+  driving_ = false;
+  blocked_since_s_ = -1.0;
+  blocked_seen_ = false;
 }
 
 void RouteFollower::fail_targets(const TaskView& view, const highlevel::HighLevelMap& map, GiveUpLedger& ledger) {

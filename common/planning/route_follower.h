@@ -62,17 +62,6 @@ struct FollowerOptions {
   Eigen::AlignedBox3d region = PlannerOptions::unbounded();
   // The leg being driven gives way to a new route's first view that is this much nearer by path.
   double switch_gain_m = 3.0;
-  // A facade view whose spot the robot cannot get onto (blocked, stuck, or no path from here)
-  // while it stands within this distance of it: the view's open targets that pass J from where
-  // it stands are observed from there, and the others count a failed try. Skipped instead, the
-  // view stayed in the plan and the robot came back for it later (default team, seed 1: the
-  // MR1000 drove to and fro between two such views 27 m apart for the mission's last 260 s).
-  // The give-up ledger takes spots within distinct_m (1.5 m) as one, so the look is the view's.
-  double stand_in_m = 1.5;
-  // J as the planner applies it (angles, sensor height, eta_s), and the species' range; no
-  // stand-in while sight_range_m is 0.
-  PlannerOptions sight;
-  double sight_range_m = 0.0;
 };
 
 // How the driver reports its motion (a v1::MotionState without the protobuf).
@@ -93,7 +82,6 @@ struct FollowerCounters {
   int views_cut_off = 0;        // a path only through what `keep_off` excludes (an attempt)
   int views_done_before = 0;    // every target complete or given up before the robot got there
   int dwells_cut_short = 0;     // every target complete before the dwell was over
-  int views_stood_in = 0;       // observed from short of the spot (FollowerOptions::stand_in_m)
   int legs_kept = 0;            // new routes that kept the leg being driven first
   int legs_switched = 0;        // new routes whose first view was much nearer than the leg's
   int stretch_views_kept = 0;   // views a new route kept in the old order after the leg
@@ -168,16 +156,6 @@ class RouteFollower {
                                    const std::unordered_set<uint64_t>& keep_off, GiveUpLedger& ledger);
   std::optional<MotionOrder> begin_observing(double now_s, const Eigen::Vector3d& position,
                                              const highlevel::HighLevelMap& map, const GiveUpLedger& ledger);
-  // Observes observed_targets_ (aims_ at its facade ones) from `position`, the dwell shared by
-  // `facade_views` views; nullopt when there is nothing to dwell on (ground views).
-  std::optional<MotionOrder> start_dwell(double now_s, const Eigen::Vector3d& position, int facade_views);
-  // The current view observed from where the robot stopped short of it (FollowerOptions::
-  // stand_in_m); false when it is not a facade view near enough or J passes for none of its
-  // open targets from here.
-  bool stand_in(double now_s, const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
-                GiveUpLedger& ledger);
-  // Keeps later paths off the vertex the robot was blocked at and leaves by its trail first.
-  void leave_blocked_spot(const Eigen::Vector3d& position);
   std::optional<MotionOrder> aim(size_t target_index, const Eigen::Vector3d& position);
   // Queues a facade target to aim at (once).
   void add_aim(uint64_t target, const highlevel::HighLevelMap& map);
@@ -194,9 +172,7 @@ class RouteFollower {
   static TargetJudgement judgement(const highlevel::Supervoxel& sv, const Eigen::Vector3d& spot, bool complete);
   void judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch);
-  // Within reach_m (observe_reach_m for a facade or frontier view) of the view's spot, or of
-  // where this species' paths to it end.
-  bool reached(const TaskView& view, const Eigen::Vector3d& position, const highlevel::HighLevelMap& map) const;
+  bool reached(const TaskView& view, const Eigen::Vector3d& position) const;  // reach_m / observe_reach_m
   // Along the executable path (infinite without one).
   double path_length(const Eigen::Vector3d& from, const TaskView& view, const highlevel::HighLevelMap& map) const;
 

@@ -84,9 +84,8 @@ double ground_target_score(const highlevel::HighLevelMap& map, const highlevel::
                            const highlevel::Supervoxel& target, const PlannerOptions& o);
 
 // J for a facade `target` from a robot standing at `position` (its sensor sensor_height_m above
-// it, level): nearer than `range_m`, inside the angle limits, line of sight clear. What a robot
-// that stopped short of a view's spot asks before it observes from there (RouteFollower) and
-// what counts as in view on the way (PassingObserver, which adds its sensors' elevation band).
+// it, level): nearer than `range_m`, inside the angle limits, line of sight clear. What counts
+// as in view on the way (PassingObserver, which adds its fixed sensors' elevation band).
 bool sees_facade(const Eigen::Vector3d& position, const highlevel::Supervoxel& target, double range_m,
                  const OcclusionGrid& occlusion, const PlannerOptions& o);
 

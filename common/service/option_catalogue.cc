@@ -67,7 +67,6 @@ const std::vector<OptionInfo>& builtin_options() {
       {"scan-hz", "sim", "LiDAR frames per sim second, every sensor (2)"},
       {"scene-dir", "sim", "write the generated scene mesh there"},
       {"snapshot-period-s", "station", "how often robots' maps are fetched for completeness (10 s)"},
-      {"stand-in-m", "planning", "blocked this near a facade view's spot: observe from there (1.5 m; 0: skip it)"},
       {"start-wait-s", "station", "start even if some robot is silent this long (60 s)"},
       {"step-hz", "sim", "motion steps and pose messages per sim second (20)"},
       {"stuck-s", "planning", "no 0.5 m of progress this long: skip the view (8 s)"},

@@ -22,9 +22,6 @@ ExecutionOptions execution_options(const service::Options& opts, const core::Spe
   follow.keep_stretch_m = opts.positive("keep-stretch-m", follow.keep_stretch_m);
   follow.switch_gain_m = opts.positive("switch-gain-m", follow.switch_gain_m);
   follow.region = planner.region;
-  follow.stand_in_m = opts.number("stand-in-m", follow.stand_in_m, 0.0);
-  follow.sight = planner;
-  follow.sight_range_m = capability.observation_range_m;
   // The cost model charges 1 / observation speed per facade task view (one per target);
   // --dwell per-target spends it on each open target (one at a time where a gimbal aims the
   // sensor), per-view on each view's targets together (common/planning/README.md).

@@ -219,35 +219,6 @@ TEST(RouteFollower, AFacadeViewIsObservedFromItsSpotNotNearIt) {
   EXPECT_TRUE(observe->observing);
 }
 
-TEST(RouteFollower, AFacadeViewIsReachedWherePathsToItEndBesideAWall) {
-  core::TeamConfig team;
-  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
-  Drive d;
-  d.map = highlevel::HighLevelMap(highlevel::species_levels(team), highlevel::clearance_options(team));
-  highlevel::MapUpdate u = synthetic_scene(small_scene({}));
-  // A wall 0.25 m north of the view's vertex: the MR1000's body stands off it, and its paths end there.
-  highlevel::Supervoxel wall;
-  wall.key = kWall;
-  wall.center = {6.5, 6.75, 0.6};
-  wall.normal = {0, -1, 0};
-  wall.surface = highlevel::SurfaceClass::kFacade;
-  wall.voxel_count = 40;
-  wall.gap = core::CoverageGap::kDensity;
-  u.upserts.push_back(wall);
-  d.map.apply(u);
-  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
-  const int mr1000 = 1;
-  const auto stand = d.map.graph().waypoint(facade.ground_key, mr1000);
-  ASSERT_TRUE(stand);
-  ASSERT_GT((*stand - facade.position).head<2>().norm(), d.options.observe_reach_m);  // the case this is about
-  RouteFollower f(d.options, mr1000);
-  f.set_route({facade}, {6.5, 2.5, 0}, d.map);
-  const auto order = f.step(0.0, *stand, DriveState::kIdle, d.map, d.keep_off, d.ledger);
-  ASSERT_TRUE(order);
-  EXPECT_TRUE(order->observing);
-  EXPECT_EQ(f.counters().views_reached, 1);
-}
-
 TEST(RouteFollower, AGroundViewIsDoneOnArrival) {
   Drive d;
   RouteFollower f(d.options, 0);
@@ -389,89 +360,6 @@ TEST(RouteFollower, BlockedOnTheWaySkipsTheViewBacksOffAndCountsAnAttempt) {
   const auto on = f.step(t + 3.0, back, DriveState::kIdle, d.map, d.keep_off, d.ledger);
   ASSERT_TRUE(on);
   EXPECT_EQ(on->path.goal.ground_key, next.ground_key);
-}
-
-// Drives north along x = 6.5 towards the facade view at (6.5, 6.5) and is blocked at `stop`;
-// returns the order the follower gives once the block has lasted.
-std::optional<MotionOrder> blocked_short_of(RouteFollower& f, Drive& d, const Eigen::Vector3d& stop, double& t) {
-  for (double y = 2.5; y <= stop.y(); y += 0.25, t += 0.5)
-    f.step(t, {stop.x(), y, 0}, DriveState::kMoving, d.map, d.keep_off, d.ledger);
-  std::optional<MotionOrder> order;
-  for (int i = 0; i < 20 && !order; ++i, t += 0.2) order = f.step(t, stop, DriveState::kBlocked, d.map, d.keep_off, d.ledger);
-  return order;
-}
-
-Drive drive_with_sight() {
-  Drive d;
-  d.options.sight_range_m = 10.0;  // J of a species that sees 10 m (planner defaults otherwise)
-  return d;
-}
-
-TEST(RouteFollower, BlockedJustShortOfAFacadeViewObservesItsTargetsFromThere) {
-  Drive d = drive_with_sight();
-  RouteFollower f(d.options, 0);
-  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
-  const TaskView next = view_at(d.map, {1.5, 1.5, 0}, false);
-  f.set_route({facade, next}, {6.5, 2.5, 0}, d.map);
-  double t = 0.0;
-  const Eigen::Vector3d stop(6.5, 5.25, 0);  // 1.25 m short: what the view is for is in sight
-  const auto order = blocked_short_of(f, d, stop, t);
-  ASSERT_TRUE(order);
-  EXPECT_TRUE(order->observing);
-  EXPECT_TRUE(order->path.goal.look_at.isApprox(facade.look_at));
-  EXPECT_EQ(f.counters().views_stood_in, 1);
-  EXPECT_EQ(f.counters().views_skipped, 0);
-  EXPECT_EQ(d.ledger.attempts(kWall), 0);
-  // The dwell lasts the observation time, is judged from where the robot stood, and then the
-  // robot leaves the way it came before heading on.
-  std::optional<MotionOrder> leave;
-  for (double end = t + 10.5; t < end; t += 0.2) {
-    const auto o = f.step(t, stop, DriveState::kIdle, d.map, d.keep_off, d.ledger);
-    if (o && !o->observing) leave = o;
-  }
-  ASSERT_TRUE(leave);
-  ASSERT_EQ(leave->path.waypoints.size(), 1u);
-  EXPECT_LT(leave->path.waypoints.front().y(), stop.y());
-  for (double end = t + 3.0; t < end; t += 0.2) f.step(t, leave->path.waypoints.front(), DriveState::kIdle, d.map, d.keep_off, d.ledger);
-  EXPECT_EQ(d.ledger.attempts(kWall), 1);
-  EXPECT_TRUE(d.ledger.tried_from(kWall, stop));
-}
-
-TEST(RouteFollower, BlockedFarShortOfAFacadeViewSkipsIt) {
-  Drive d = drive_with_sight();
-  RouteFollower f(d.options, 0);
-  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
-  f.set_route({facade}, {6.5, 2.5, 0}, d.map);
-  double t = 0.0;
-  const auto order = blocked_short_of(f, d, {6.5, 4.0, 0}, t);  // 2.5 m short: another spot
-  ASSERT_TRUE(order);
-  EXPECT_FALSE(order->observing);
-  EXPECT_EQ(f.counters().views_stood_in, 0);
-  EXPECT_EQ(f.counters().views_skipped, 1);
-}
-
-TEST(RouteFollower, BlockedShortOfAFacadeViewWhoseTargetIsHiddenFromThereSkipsIt) {
-  Drive d = drive_with_sight();
-  // A wall between where the robot is blocked and the target (a plate across the line of sight).
-  highlevel::Supervoxel screen;
-  screen.key = kWall + 1;
-  screen.center = {6.5, 7.2, 1.0};
-  screen.normal = {0, -1, 0};
-  screen.surface = highlevel::SurfaceClass::kFacade;
-  screen.voxel_count = 40;
-  screen.covered = true;
-  screen.covered_voxels = 40;
-  d.map.apply(highlevel::MapUpdate{.upserts = {screen}});
-  RouteFollower f(d.options, 0);
-  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
-  f.set_route({facade}, {6.5, 2.5, 0}, d.map);
-  double t = 0.0;
-  const auto order = blocked_short_of(f, d, {6.5, 5.25, 0}, t);
-  ASSERT_TRUE(order);
-  EXPECT_FALSE(order->observing);
-  EXPECT_EQ(f.counters().views_stood_in, 0);
-  EXPECT_EQ(f.counters().views_skipped, 1);
-  EXPECT_EQ(d.ledger.attempts(kWall), 1);
 }
 
 TEST(RouteFollower, AViewCutOffByASilentTeammateCountsAnAttemptEachRound) {
