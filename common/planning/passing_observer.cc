@@ -15,12 +15,13 @@ bool PassingObserver::in_view(const highlevel::Supervoxel& sv, const Eigen::Vect
                               const OcclusionGrid& occlusion) const {
   if (sv.ground())
     return (sv.center - position).head<2>().norm() <= passing_.ground_reach_m && std::abs(sv.center.z() - position.z()) < 1.5;
-  // Only the band its fixed sensors cover: on the way no gimbal is aimed at it.
   const Eigen::Vector3d sensor = position + Eigen::Vector3d(0, 0, planner_.sensor_height_m);
   const ViewGeometry g = view_geometry(sensor, Eigen::Vector3d::UnitZ(), sv.center, sv.normal);
+  if (g.distance_m >= passing_.range_m) return false;
   if (g.elevation_rad < passing_.elevation_min_deg * kDegToRad || g.elevation_rad > passing_.elevation_max_deg * kDegToRad)
     return false;
-  return sees_facade(position, sv, passing_.range_m, occlusion, planner_);
+  if (!angles_ok(g, planner_, planner_.shared_view_margin_deg)) return false;
+  return occlusion.clear(sensor, sv);
 }
 
 void PassingObserver::step(double now_s, const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,

@@ -92,13 +92,6 @@ double ground_target_score(const highlevel::HighLevelMap& map, const highlevel::
   return d > o.ground_cover_radius_m ? 0.0 : 1.0 / (o.beta_l * d + 1e-3);
 }
 
-bool sees_facade(const Eigen::Vector3d& position, const highlevel::Supervoxel& target, double range_m,
-                 const OcclusionGrid& occlusion, const PlannerOptions& o) {
-  const Eigen::Vector3d sensor = position + Eigen::Vector3d(0, 0, o.sensor_height_m);
-  const ViewGeometry g = view_geometry(sensor, Eigen::Vector3d::UnitZ(), target.center, target.normal);
-  return g.distance_m < range_m && angles_ok(g, o, o.shared_view_margin_deg) && occlusion.clear(sensor, target);
-}
-
 double ground_view_score(const highlevel::HighLevelMap& map, const highlevel::Supervoxel& ground,
                          const highlevel::Supervoxel& target, double range_m, const OcclusionGrid& occlusion,
                          const PlannerOptions& o, int64_t& rays) {

@@ -83,12 +83,6 @@ inline double visibility_score(const ViewGeometry& g, const PlannerOptions& o) {
 double ground_target_score(const highlevel::HighLevelMap& map, const highlevel::Supervoxel& ground,
                            const highlevel::Supervoxel& target, const PlannerOptions& o);
 
-// J for a facade `target` from a robot standing at `position` (its sensor sensor_height_m above
-// it, level): nearer than `range_m`, inside the angle limits, line of sight clear. What counts
-// as in view on the way (PassingObserver, which adds its fixed sensors' elevation band).
-bool sees_facade(const Eigen::Vector3d& position, const highlevel::Supervoxel& target, double range_m,
-                 const OcclusionGrid& occlusion, const PlannerOptions& o);
-
 // What a robot standing on the ground supervoxel `ground` scores for `target` (MNSS and route
 // pruning ask the same question): a facade target nearer than `range_m` from the sensor that
 // passes J (angles, then a line of sight through `occlusion`, counted in `rays`) scores Vis; a
