@@ -1,16 +1,11 @@
 #include "common/planning/plan_proto.h"
 
+#include "common/radio/vec3_proto.h"
+
 namespace hexplore::planning {
-namespace {
 
-void set(v1::Vec3* out, const Eigen::Vector3d& p) {
-  out->set_x(p.x());
-  out->set_y(p.y());
-  out->set_z(p.z());
-}
-Eigen::Vector3d get(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
-}  // namespace
+using radio::set;
+using radio::vec;
 
 v1::TeamSolution to_proto(const PlanResult& r) {
   v1::TeamSolution out;
@@ -36,7 +31,7 @@ ReferenceSolution reference_from_proto(const v1::TeamSolution& s, const std::str
     ReferenceRoute r;
     r.robot_id = seq.robot_id();
     r.cluster_ids.assign(seq.cluster_ids().begin(), seq.cluster_ids().end());
-    for (const auto& c : seq.cluster_centers_m()) r.centers.push_back(get(c));
+    for (const auto& c : seq.cluster_centers_m()) r.centers.push_back(vec(c));
     r.length_m = seq.route_length_m();
     out.routes.push_back(std::move(r));
   }
