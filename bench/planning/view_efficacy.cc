@@ -11,7 +11,7 @@
 //                            [--dwell-s S (default: the species' 1 / observation speed)]
 //                            [--survey-spacing-m 4] [--seed 1] [--lidar-pattern livox|fixed]
 //                            [--density all_points|qualifying_points|neighbour_occupancy] [--rho-th X]
-//                            [--ise-patch N]
+//                            [--ise-patch N] [--params-from TEAM.yaml]
 //                            [--verbose true]
 #include <algorithm>
 #include <array>
@@ -54,6 +54,7 @@ struct Args {
   uint64_t seed = 1;
   bool fixed_pattern = false;
   bool verbose = false;        // one line per view
+  std::string params_from;     // team file whose params: (rho_th, patch size, ...) replace the paper's
   std::string density;         // overrides params.rho_measure
   double rho_th = -1.0;        // overrides the team default
   int ise_patch = 0;           // overrides params.min_ise_patch_voxels when > 0
@@ -73,6 +74,7 @@ Args parse(int argc, char** argv) {
     else if (k == "--lidar-pattern") a.fixed_pattern = v == "fixed";
     else if (k == "--verbose") a.verbose = v == "true";
     else if (k == "--density") a.density = v;
+    else if (k == "--params-from") a.params_from = v;
     else if (k == "--rho-th") a.rho_th = std::atof(v.c_str());
     else if (k == "--ise-patch") a.ise_patch = std::atoi(v.c_str());
     else if (k == "--extent-m") a.extent_m = std::atof(v.c_str());
@@ -172,6 +174,9 @@ int main(int argc, char** argv) {
   const sim::SceneInfo scene = sim::generate_scene(args.scene, args.seed);
   const sim::RayCaster caster(scene.mesh);
   core::TeamConfig team;
+  // The paper's parameters unless a team file's are asked for: the team files lower rho_th for
+  // the simulator's 2 Hz LiDARs, so a bench run without them judges by a stricter density.
+  if (!args.params_from.empty()) team.params = core::load_team_config(args.params_from).params;
   team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
   if (args.fixed_pattern)
     for (auto& s : team.species)
@@ -183,6 +188,9 @@ int main(int argc, char** argv) {
   if (args.ise_patch > 0) team.params.min_ise_patch_voxels = args.ise_patch;
   const core::AlgorithmParams& params = team.params;
   const Eigen::Vector3d centre = scene.site.center();
+  std::printf("scene %s, seed %llu, rho_th %.3g (%s), ISE patch %d voxels, LiDARs at %.3g Hz\n", args.scene.c_str(),
+              static_cast<unsigned long long>(args.seed), params.rho_th, params.rho_measure.c_str(),
+              params.min_ise_patch_voxels, args.scan_hz);
 
   std::vector<Robot> robots;
   highlevel::SegmenterParams seg;
