@@ -28,6 +28,8 @@ struct MapUpdate {
   std::vector<uint64_t> removals;
   std::vector<EdgeKey> edge_upserts;
   std::vector<EdgeKey> edge_removals;
+  // Supervoxels of the wire message left out as malformed (map_proto.h); not part of the change.
+  size_t malformed = 0;
 
   bool empty() const {
     return !full_snapshot && upserts.empty() && removals.empty() && edge_upserts.empty() &&

@@ -1,6 +1,9 @@
 #include "common/highlevel/map_proto.h"
 
 #include <algorithm>
+#include <cstdint>
+
+#include "common/core/world_bounds.h"
 
 namespace hexplore::highlevel {
 namespace {
@@ -32,8 +35,13 @@ void fill_update(const Message& m, MapUpdate* u) {
   for (const v1::Supervoxel& s : m.supervoxels()) {
     if (s.removed()) {
       u->removals.push_back(s.key());
+      continue;
+    }
+    Supervoxel sv = from_proto(s);
+    if (core::within_world(sv.center) && core::plausible_normal(sv.normal)) {
+      u->upserts.push_back(std::move(sv));
     } else {
-      u->upserts.push_back(from_proto(s));
+      ++u->malformed;
     }
   }
   for (const v1::TopologyEdge& e : m.edges()) {
@@ -71,10 +79,19 @@ VoxelSample from_proto(const v1::Voxel& v) {
   return s;
 }
 
-std::vector<VoxelSample> voxel_samples(const v1::VoxelDelta& delta) {
+std::vector<VoxelSample> voxel_samples(const v1::VoxelDelta& delta, size_t* malformed) {
   std::vector<VoxelSample> out;
   out.reserve(delta.voxels_size());
-  for (const v1::Voxel& v : delta.voxels()) out.push_back(from_proto(v));
+  size_t dropped = 0;
+  for (const v1::Voxel& v : delta.voxels()) {
+    VoxelSample s = from_proto(v);
+    if (core::within_world(s.mean) && core::plausible_normal(s.normal)) {
+      out.push_back(s);
+    } else {
+      ++dropped;
+    }
+  }
+  if (malformed != nullptr) *malformed = dropped;
   return out;
 }
 
@@ -84,11 +101,13 @@ Supervoxel from_proto(const v1::Supervoxel& s) {
   sv.center = Eigen::Vector3d(s.center_x(), s.center_y(), s.center_z());
   sv.normal = Eigen::Vector3d(s.normal_x(), s.normal_y(), s.normal_z());
   sv.covered = s.covered();
-  sv.traversal_requirement = static_cast<int>(s.traversal_requirement());
-  sv.surface = static_cast<SurfaceClass>(s.surface());
-  if (sv.surface == SurfaceClass::kUnspecified) sv.surface = surface_of_key(sv.key);
-  sv.voxel_count = static_cast<int>(s.voxel_count());
-  sv.covered_voxels = sv.covered ? sv.voxel_count : static_cast<int>(std::min(s.covered_voxels(), s.voxel_count()));
+  // Beyond every species' level is as strict as a requirement gets; the cap keeps it an int.
+  sv.traversal_requirement = static_cast<int>(std::min<uint32_t>(s.traversal_requirement(), 1u << 16));
+  // An unknown class (proto3 enums take any number) is read from the key, like an unset one.
+  const bool known_surface = s.surface() == v1::SURFACE_CLASS_GROUND || s.surface() == v1::SURFACE_CLASS_FACADE;
+  sv.surface = known_surface ? static_cast<SurfaceClass>(s.surface()) : surface_of_key(sv.key);
+  sv.voxel_count = static_cast<int>(std::min<uint32_t>(s.voxel_count(), INT32_MAX));
+  sv.covered_voxels = sv.covered ? sv.voxel_count : static_cast<int>(std::min<uint32_t>(s.covered_voxels(), uint32_t(sv.voxel_count)));
   sv.gap = sv.covered ? core::CoverageGap::kNone : core::coverage_gap_from_wire(uint32_t(s.coverage_gap()));
   return sv;
 }

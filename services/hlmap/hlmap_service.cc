@@ -85,6 +85,10 @@ void HlmapService::setup(service::ServiceContext& context) {
   metrics_.repair_requests = counter("hexplore_hlmap_repair_requests_total", "MapRepairRequests sent to peers");
   metrics_.snapshots_served = counter("hexplore_hlmap_snapshots_served_total", "MapSnapshots served to peers");
   metrics_.bad_deltas = counter("hexplore_hlmap_bad_voxel_deltas_total", "Voxel deltas dropped (wrong resolution)");
+  metrics_.malformed_voxels = counter("hexplore_hlmap_malformed_voxels_total",
+                                      "Voxels dropped from deltas: mean off the world or not finite, normal not a unit vector");
+  metrics_.malformed_supervoxels = counter("hexplore_hlmap_malformed_supervoxels_total",
+                                           "Teammates' supervoxels dropped: centre off the world or not finite, bad normal");
   metrics_.full_map_bytes = counter("hexplore_hlmap_full_map_equivalent_bytes_total",
                                     "Bytes that broadcasting the whole contribution every eta_c would have cost");
 
@@ -131,7 +135,13 @@ void HlmapService::on_voxels(const v1::VoxelDelta& delta) {
         << params_.resolution_m << " m)";
     return;
   }
-  const auto samples = highlevel::voxel_samples(delta);
+  size_t malformed = 0;
+  const auto samples = highlevel::voxel_samples(delta, &malformed);
+  if (malformed > 0) {
+    metrics_.malformed_voxels->increment(static_cast<double>(malformed));
+    core::log_once(core::LogLevel::kWarn, "hlmap", "malformed-voxels",
+                   robot_id_ + ": dropping malformed voxels from mapping (counted in hexplore_hlmap_malformed_voxels_total)");
+  }
   const Stopwatch watch;
   const auto change = delta.full_snapshot() ? segmenter_->replace_all(samples) : segmenter_->update(samples);
   metrics_.segmentation_s->observe(watch.seconds());
@@ -154,11 +164,23 @@ void HlmapService::apply_ready(std::vector<highlevel::SourcedUpdate> ready) {
 }
 
 void HlmapService::on_increment(const v1::MapIncrement& increment) {
-  apply_ready(sync_->on_increment(highlevel::from_proto(increment)));
+  highlevel::SourcedUpdate update = highlevel::from_proto(increment);
+  count_malformed(update);
+  apply_ready(sync_->on_increment(std::move(update)));
 }
 
 void HlmapService::on_snapshot(const v1::MapSnapshot& snapshot) {
-  apply_ready(sync_->on_snapshot(highlevel::from_proto(snapshot)));
+  highlevel::SourcedUpdate update = highlevel::from_proto(snapshot);
+  count_malformed(update);
+  apply_ready(sync_->on_snapshot(std::move(update)));
+}
+
+void HlmapService::count_malformed(const highlevel::SourcedUpdate& update) {
+  if (update.update.malformed == 0) return;
+  metrics_.malformed_supervoxels->increment(static_cast<double>(update.update.malformed));
+  core::log_once(core::LogLevel::kWarn, "hlmap", "malformed-supervoxels/" + std::string(transport::topics::peer_label(update.source)),
+                 robot_id_ + ": dropping malformed supervoxels from '" + update.source +
+                     "' (counted in hexplore_hlmap_malformed_supervoxels_total)");
 }
 
 v1::MapSnapshot HlmapService::serve_repair(const v1::MapRepairRequest& request) {

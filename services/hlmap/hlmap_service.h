@@ -29,6 +29,8 @@ class HlmapService : public service::Service {
   void on_voxels(const v1::VoxelDelta& delta);
   void on_increment(const v1::MapIncrement& increment);
   void on_snapshot(const v1::MapSnapshot& snapshot);
+  // Counts and logs (once per teammate) the supervoxels from_proto left out as malformed.
+  void count_malformed(const highlevel::SourcedUpdate& update);
   void apply_ready(std::vector<highlevel::SourcedUpdate> ready);
   v1::MapSnapshot serve_repair(const v1::MapRepairRequest& request);
   v1::FusedMapUpdate serve_fused(const v1::FusedMapRequest& request);
@@ -71,6 +73,8 @@ class HlmapService : public service::Service {
     metrics::Counter* repair_requests = nullptr;
     metrics::Counter* snapshots_served = nullptr;
     metrics::Counter* bad_deltas = nullptr;
+    metrics::Counter* malformed_voxels = nullptr;
+    metrics::Counter* malformed_supervoxels = nullptr;
     metrics::Counter* full_map_bytes = nullptr;
   } metrics_;
   highlevel::PeerSyncStats reported_;  // sync stats already added to the counters

@@ -101,6 +101,9 @@ void PlanningService::setup(service::ServiceContext& context) {
   agreement_ = m.gauge_family("hexplore_planning_assignment_agreement_ratio",
                               "Share of clusters assigned to the same robot as in the reference solution")
                    ->add(labels_);
+  malformed_supervoxels_ = m.counter_family("hexplore_planning_malformed_supervoxels_total",
+                                            "Supervoxels of the fused map dropped: centre off the world or not finite, bad normal")
+                               ->add(labels_);
   rounds_ = m.counter_family("hexplore_planning_rounds_total", "Planning rounds run, by planner");
   switches_ = m.counter_family("hexplore_planning_planner_switches_total", "Run-time planner switches, by new planner");
   active_gauge_ = m.gauge_family("hexplore_planning_planner_active", "1 for the active planner, 0 for the others");
@@ -225,7 +228,13 @@ void PlanningService::on_map(const v1::FusedMapUpdate& update) {
   } else if (have_map_ && update.version() < map_version_) {
     return;  // an older snapshot than what we have
   }
-  map_->apply(highlevel::from_proto(update));
+  const highlevel::MapUpdate change = highlevel::from_proto(update);
+  if (change.malformed > 0) {
+    malformed_supervoxels_->increment(static_cast<double>(change.malformed));
+    core::log_once(core::LogLevel::kWarn, "planning", "malformed-supervoxels",
+                   robot_id_ + ": dropping malformed supervoxels of the fused map (hexplore_planning_malformed_supervoxels_total)");
+  }
+  map_->apply(change);
   map_version_ = update.version();
   have_map_ = true;
 }

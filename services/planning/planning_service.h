@@ -134,6 +134,7 @@ class PlanningService : public service::Service {
   metrics::Gauge* generations_ = nullptr;
   metrics::Gauge* fitness_ = nullptr;
   metrics::Gauge* agreement_ = nullptr;
+  metrics::Counter* malformed_supervoxels_ = nullptr;
   metrics::CounterFamily* rounds_ = nullptr;
   metrics::CounterFamily* switches_ = nullptr;
   metrics::GaugeFamily* active_gauge_ = nullptr;
