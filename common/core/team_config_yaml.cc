@@ -26,6 +26,8 @@ class Reader {
   void only_keys(const YAML::Node& map, const std::string& path, const std::set<std::string>& known) const {
     if (!map.IsMap()) fail(map, path, "must be a mapping");
     for (const auto& kv : map) {
+      // A YAML key may itself be a list or a mapping ("? - a"); a team file's keys are names.
+      if (!kv.first.IsScalar()) fail(kv.first, path, "keys must be plain names");
       const auto name = kv.first.as<std::string>();
       if (!known.contains(name)) {
         std::string list;
@@ -254,7 +256,9 @@ void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
 
 }  // namespace
 
-TeamConfig parse_team_config(const std::string& yaml_text, const std::string& origin) {
+namespace {
+
+TeamConfig parse_root(const std::string& yaml_text, const std::string& origin) {
   YAML::Node root;
   try {
     root = YAML::Load(yaml_text);
@@ -302,6 +306,18 @@ TeamConfig parse_team_config(const std::string& yaml_text, const std::string& or
   if (const auto p = root["params"]; p.IsDefined()) read_params(r, p, c.params);
   validate(c);
   return c;
+}
+
+}  // namespace
+
+TeamConfig parse_team_config(const std::string& yaml_text, const std::string& origin) {
+  try {
+    return parse_root(yaml_text, origin);
+  } catch (const YAML::Exception& e) {
+    // The reader checks every node before converting it; this is the net for a shape it did
+    // not foresee (tests/fuzz/fuzz_team_yaml), so a broken file still ends in a ConfigError.
+    throw ConfigError(origin, "", "cannot read the file: " + e.msg, e.mark.is_null() ? 0 : e.mark.line + 1);
+  }
 }
 
 TeamConfig load_team_config(const std::string& path) {

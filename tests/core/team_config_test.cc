@@ -120,6 +120,13 @@ void expect_error(const std::string& yaml, const std::string& key, const std::st
   }
 }
 
+// Found by tests/fuzz/fuzz_team_yaml: a YAML key that is itself a list ("? - a") escaped as a
+// yaml-cpp conversion error and ended the process instead of naming the problem.
+TEST(TeamConfig, AKeyThatIsAListIsAConfigError) {
+  expect_error("species:\n  - builtin: SLUGCAT\n? - builtin: MR1000\n: 3\nrobots: []\n", "", "keys must be plain names", 3);
+  expect_error("species:\n  - {? [a, b] : 1}\nrobots: []\n", "species[0]", "keys must be plain names");
+}
+
 TEST(TeamConfig, UnknownSpeciesIsNamed) {
   expect_error("species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: WALKER}]\n", "robots[0].species",
                "unknown species 'WALKER'");
