@@ -39,10 +39,15 @@ declare -A ci_runs=([envelope]=600000 [scan]=400 [voxel_delta]=15000 [map_update
                     [mission_command]=500000 [requests]=500000 [team_yaml]=15000 [tsplib]=150000
                     [mesh]=500)
 
-if ! command -v clang++ >/dev/null; then
+# clang, and its sanitizer and libFuzzer runtimes (only recommended by clang on Debian 12).
+missing=()
+for p in clang libclang-rt-14-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
   SUDO=$([ "$(id -u)" -eq 0 ] && echo "" || echo sudo)
   $SUDO apt-get update -q
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends clang
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 scripts/install_deps.sh >/dev/null
 cmake --preset fuzz >/dev/null
