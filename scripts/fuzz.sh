@@ -5,8 +5,8 @@
 #   scripts/fuzz.sh [SECONDS_PER_HARNESS=20] [HARNESS ...]   # a search: random, for a while
 #   scripts/fuzz.sh --ci [HARNESS ...]                       # what CI runs: a fixed search
 #
-# --ci runs each harness for a fixed number of inputs from a fixed seed (about 10 s each on a
-# 2-core machine), so that CI gives the same verdict every time on the same tree: a search that
+# --ci runs each harness for a fixed number of inputs from a fixed seed (3-4 s each on an idle
+# 2-core machine, 42 s for all twelve; the clang build before it about 3 minutes), so that CI gives the same verdict every time on the same tree: a search that
 # may or may not hit a crash would make landing a matter of luck. Longer searches are for
 # people, with the first form.
 #
@@ -32,7 +32,7 @@ if [ ${#harnesses[@]} -eq 0 ]; then
   harnesses=(envelope scan voxel_delta map_update team_solution path_fragment pose mission_command requests
              team_yaml tsplib mesh)
 fi
-# Inputs per harness in --ci mode: about 10 s each at the rates measured on a 2-core machine
+# Inputs per harness in --ci mode: a few seconds each at the rates measured on a 2-core machine
 # (tests/fuzz/README.md).
 declare -A ci_runs=([envelope]=600000 [scan]=400 [voxel_delta]=15000 [map_update]=150000
                     [team_solution]=400000 [path_fragment]=400000 [pose]=500000
