@@ -14,12 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace hexplore;
   v1::VoxelDelta delta;
   if (!fuzz::decode_payload(data, size, delta)) return 0;
-  const core::AlgorithmParams& team = fuzz::team().params;
-  highlevel::SegmenterParams params;
-  params.resolution_m = team.map_resolution_m;
-  params.eta_s_m = team.eta_s_m;
-  params.eta_e_m = team.eta_e_m;
-  params.min_ise_patch_voxels = team.min_ise_patch_voxels;
+  const highlevel::SegmenterParams params = fuzz::segmenter_params();
   if (std::abs(delta.resolution_m() - params.resolution_m) > 1e-9 * params.resolution_m) return 0;
   highlevel::SupervoxelSegmenter segmenter(params, highlevel::species_levels(fuzz::team()));
   highlevel::ContributionLog log("slugcat1");

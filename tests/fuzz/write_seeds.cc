@@ -82,12 +82,7 @@ void write_map_messages() {
   write_payload("voxel_delta", "increment", delta);
   write_payload("voxel_delta", "snapshot", perception::to_voxel_delta(voxels, map.resolution(), true));
 
-  const core::AlgorithmParams& team = fuzz::team().params;
-  highlevel::SegmenterParams params;
-  params.resolution_m = team.map_resolution_m;
-  params.eta_s_m = team.eta_s_m;
-  params.eta_e_m = team.eta_e_m;
-  params.min_ise_patch_voxels = team.min_ise_patch_voxels;
+  const highlevel::SegmenterParams params = fuzz::segmenter_params();
   highlevel::SupervoxelSegmenter segmenter(params, highlevel::species_levels(fuzz::team()));
   highlevel::ContributionLog log("mr1000a");
   log.record(segmenter, segmenter.update(highlevel::voxel_samples(delta)));
