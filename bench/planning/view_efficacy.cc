@@ -193,11 +193,7 @@ int main(int argc, char** argv) {
               params.min_ise_patch_voxels, args.scan_hz);
 
   std::vector<Robot> robots;
-  highlevel::SegmenterParams seg;
-  seg.resolution_m = params.map_resolution_m;
-  seg.eta_s_m = params.eta_s_m;
-  seg.min_ise_patch_voxels = params.min_ise_patch_voxels;
-  seg.eta_e_m = params.eta_e_m;
+  const highlevel::SegmenterParams seg = highlevel::SegmenterParams::from(params);
   for (size_t k = 0; k < team.species.size(); ++k) {
     Robot r;
     r.species = team.species[k];

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/core/team_config.h"
+
 namespace hexplore::highlevel {
 namespace {
 
@@ -48,6 +50,15 @@ int64_t cell_dist2(const core::GridCell& a, const core::GridCell& b) {
 }
 
 }  // namespace
+
+SegmenterParams SegmenterParams::from(const core::AlgorithmParams& params) {
+  SegmenterParams out;
+  out.resolution_m = params.map_resolution_m;
+  out.eta_s_m = params.eta_s_m;
+  out.eta_e_m = params.eta_e_m;
+  out.min_ise_patch_voxels = params.min_ise_patch_voxels;
+  return out;
+}
 
 void SegmenterParams::validate() const {
   auto fail = [](const std::string& what) { throw std::invalid_argument("SegmenterParams: " + what); };

@@ -18,6 +18,10 @@
 #include "common/highlevel/voxel_index.h"
 #include "common/highlevel/voxel_sample.h"
 
+namespace hexplore::core {
+struct AlgorithmParams;
+}  // namespace hexplore::core
+
 namespace hexplore::highlevel {
 
 struct SegmenterParams {
@@ -34,6 +38,9 @@ struct SegmenterParams {
   // common/planning/README.md ("The coverage model") has the measured effect.
   int min_ise_patch_voxels = 1;
 
+  // The team's (params: map_resolution_m, eta_s_m, eta_e_m, min_ise_patch_voxels), as every
+  // hlmap service segments with.
+  static SegmenterParams from(const core::AlgorithmParams& params);
   // Throws std::invalid_argument naming the bad field.
   void validate() const;
 };

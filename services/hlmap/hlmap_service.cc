@@ -37,10 +37,7 @@ void HlmapService::setup(service::ServiceContext& context) {
   }
   levels_ = highlevel::species_levels(team);
   if (levels_.empty()) throw core::ConfigError(team.source_file, "species", "hlmap: the team has no species");
-  params_.resolution_m = team.params.map_resolution_m;
-  params_.eta_s_m = team.params.eta_s_m;
-  params_.eta_e_m = team.params.eta_e_m;
-  params_.min_ise_patch_voxels = team.params.min_ise_patch_voxels;
+  params_ = highlevel::SegmenterParams::from(team.params);
   try {
     params_.validate();
   } catch (const std::invalid_argument& e) {

@@ -40,14 +40,4 @@ const transport::SocketOptions& team_socket_options() {
   return options;
 }
 
-highlevel::SegmenterParams segmenter_params() {
-  const core::AlgorithmParams& p = team().params;
-  highlevel::SegmenterParams params;
-  params.resolution_m = p.map_resolution_m;
-  params.eta_s_m = p.eta_s_m;
-  params.eta_e_m = p.eta_e_m;
-  params.min_ise_patch_voxels = p.min_ise_patch_voxels;
-  return params;
-}
-
 }  // namespace hexplore::fuzz

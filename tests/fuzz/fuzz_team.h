@@ -13,7 +13,6 @@
 #include <string_view>
 
 #include "common/core/team_config.h"
-#include "common/highlevel/segmenter.h"
 #include "common/transport/envelope.h"
 #include "common/transport/payload_wire.h"
 #include "common/transport/socket_options.h"
@@ -25,8 +24,6 @@ namespace hexplore::fuzz {
 // no file: decoders see the roster and codecs a real team's sockets have.
 const core::TeamConfig& team();
 const transport::SocketOptions& team_socket_options();
-// The segmenter parameters an hlmap service of the team runs with.
-highlevel::SegmenterParams segmenter_params();
 
 // Unpacks and parses a payload frame as a subscriber does; false where the subscriber would
 // drop the frame (counted there as malformed).

@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace hexplore;
   v1::VoxelDelta delta;
   if (!fuzz::decode_payload(data, size, delta)) return 0;
-  const highlevel::SegmenterParams params = fuzz::segmenter_params();
+  const highlevel::SegmenterParams params = highlevel::SegmenterParams::from(fuzz::team().params);
   if (std::abs(delta.resolution_m() - params.resolution_m) > 1e-9 * params.resolution_m) return 0;
   highlevel::SupervoxelSegmenter segmenter(params, highlevel::species_levels(fuzz::team()));
   highlevel::ContributionLog log("slugcat1");

@@ -82,7 +82,7 @@ void write_map_messages() {
   write_payload("voxel_delta", "increment", delta);
   write_payload("voxel_delta", "snapshot", perception::to_voxel_delta(voxels, map.resolution(), true));
 
-  const highlevel::SegmenterParams params = fuzz::segmenter_params();
+  const highlevel::SegmenterParams params = highlevel::SegmenterParams::from(fuzz::team().params);
   highlevel::SupervoxelSegmenter segmenter(params, highlevel::species_levels(fuzz::team()));
   highlevel::ContributionLog log("mr1000a");
   log.record(segmenter, segmenter.update(highlevel::voxel_samples(delta)));
