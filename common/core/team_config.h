@@ -91,6 +91,10 @@ struct TransportConfig {
   int receive_high_water_mark = 10000;
   int64_t max_message_bytes = 64 * 1024 * 1024;
   int linger_ms = 1000;                  // how long a closing socket may flush queued messages
+  // CURVE authentication and encryption of every tcp socket (common/transport/curve_keys.h):
+  // the folder of the team's key pairs, one per robot and one for the station (hexplore_keys
+  // writes them); relative to the team file's folder. "" = plain ZeroMQ.
+  std::string curve_keys_dir;
   RadioConfig radio;
 };
 

@@ -1,6 +1,7 @@
 // YAML reader for TeamConfig. Every key is checked: unknown keys, wrong types and bad values
 // raise ConfigError with the file, the dotted key path and the line, so typos never pass silently.
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -174,7 +175,7 @@ void read_radio(const Reader& r, const YAML::Node& n, RadioConfig& radio) {
 void read_transport(const Reader& r, const YAML::Node& n, TransportConfig& t) {
   const std::string path = "transport";
   r.only_keys(n, path, {"scheme", "host_template", "base_port", "ports_per_robot", "ipc_dir", "send_high_water_mark",
-                        "receive_high_water_mark", "max_message_bytes", "linger_ms", "radio"});
+                        "receive_high_water_mark", "max_message_bytes", "linger_ms", "curve_keys_dir", "radio"});
   if (const auto radio = n["radio"]; radio.IsDefined() && !radio.IsNull()) read_radio(r, radio, t.radio);
   r.read(n, path, "scheme", t.scheme);
   r.read(n, path, "host_template", t.host_template);
@@ -185,6 +186,7 @@ void read_transport(const Reader& r, const YAML::Node& n, TransportConfig& t) {
   r.read(n, path, "receive_high_water_mark", t.receive_high_water_mark);
   r.read(n, path, "max_message_bytes", t.max_message_bytes);
   r.read(n, path, "linger_ms", t.linger_ms);
+  r.read(n, path, "curve_keys_dir", t.curve_keys_dir);
 }
 
 void read_liveness(const Reader& r, const YAML::Node& n, LivenessParams& l) {
@@ -326,7 +328,12 @@ TeamConfig load_team_config(const std::string& path) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   if (buffer.str().find_first_not_of(" \t\r\n") == std::string::npos) throw ConfigError(path, "", "the file is empty");
-  return parse_team_config(buffer.str(), path);
+  TeamConfig config = parse_team_config(buffer.str(), path);
+  // A relative key folder belongs to the team file, wherever the process was started from.
+  std::string& keys = config.transport.curve_keys_dir;
+  if (!keys.empty() && std::filesystem::path(keys).is_relative())
+    keys = (std::filesystem::path(path).parent_path() / keys).lexically_normal().string();
+  return config;
 }
 
 }  // namespace hexplore::core

@@ -109,6 +109,7 @@ class ServiceContext {
     std::shared_ptr<const transport::Roster> roster;
     std::shared_ptr<const transport::CodecTable> codecs;
     std::shared_ptr<transport::RadioMedium> radio;
+    std::shared_ptr<const transport::CurveKeyring> keyring;  // null: plain ZeroMQ
   };
   ServiceContext(const core::TeamConfig& team, const std::string& robot_id, core::ServiceKind kind,
                  transport::Context& transport, metrics::Registry& metrics, const metrics::TransportFamilies& families,
@@ -123,6 +124,7 @@ class ServiceContext {
   metrics::Registry* metrics_;
   const std::map<std::string, std::string>* arguments_;
   const TeamWire* wire_;
+  std::shared_ptr<const transport::CurveCredentials> curve_;  // this member's keys; null: plain
   transport::Accounting accounting_;
   transport::EventLoop loop_;
   std::unique_ptr<transport::Publisher> publisher_;

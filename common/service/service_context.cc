@@ -2,6 +2,7 @@
 #include "common/core/log.h"
 #include "common/radio/team_codecs.h"
 #include "common/service/service.h"
+#include "common/service/team_keys.h"
 #include "common/transport/topics.h"
 
 namespace hexplore::service {
@@ -29,6 +30,7 @@ ServiceContext::ServiceContext(const core::TeamConfig& team, const std::string& 
   const core::RobotConfig* r = team.find_robot(robot_id);
   identity_.species = r != nullptr ? r->species : "";
   identity_.service = std::string(core::service_name(kind));
+  curve_ = member_credentials(team, wire.keyring, robot_id);
 }
 
 const core::SpeciesConfig* ServiceContext::species() const {
@@ -42,6 +44,7 @@ transport::SocketOptions ServiceContext::socket_options() const {
   options.codecs = wire_->codecs;
   options.radio = wire_->radio;
   options.receiver_robot = identity_.robot_id;
+  options.curve = curve_;
   return options;
 }
 
@@ -69,7 +72,7 @@ transport::Subscriber& ServiceContext::make_subscriber(const transport::SocketOp
 void ServiceContext::connect(const std::string& robot_id, core::ServiceKind service) {
   const std::string endpoint = core::connect_endpoint(*team_, robot_id, service, core::SocketRole::kPublish);
   if (connected_[endpoint]) return;
-  subscriber().connect(endpoint);
+  subscriber().connect(endpoint, robot_id);
   connected_[endpoint] = true;
 }
 

@@ -8,6 +8,7 @@
 #include "common/metrics/prometheus_registry.h"
 #include "common/service/option_catalogue.h"
 #include "common/service/service.h"
+#include "common/service/team_keys.h"
 
 namespace hexplore::service {
 
@@ -46,6 +47,18 @@ ServiceHost::ServiceHost(core::TeamConfig team, HostOptions options)
   const transport::SocketOptions team_options = team_socket_options(team_);
   wire_.roster = team_options.roster;
   wire_.codecs = team_options.codecs;
+  // Authenticated team links: the guard admits only the team's keys to this process's servers.
+  wire_.keyring = team_keyring(team_);
+  if (wire_.keyring) {
+    metrics::CounterFamily* refused = registry_->counter_family(
+        "hexplore_transport_rejected_peers_total",
+        "Peers refused by the CURVE guard: reason=unknown_key (handshake with a key not in the team), handshake (no or wrong keys)");
+    metrics::Counter* unknown = refused->add({{"reason", "unknown_key"}});
+    metrics::Counter* handshake = refused->add({{"reason", "handshake"}});
+    transport_.enable_curve(wire_.keyring, [unknown, handshake](transport::CurveGuard::Refusal why, const std::string&) {
+      (why == transport::CurveGuard::Refusal::kUnknownKey ? unknown : handshake)->increment();
+    });
+  }
   if (team_.transport.radio.active())
     wire_.radio = std::make_shared<transport::RadioMedium>(team_.transport.radio, wire_.roster, team_.params.seed,
                                                            options_.lockstep);

@@ -2,9 +2,12 @@
 // One ZeroMQ context per process (inproc endpoints only connect within one context), and the
 // identity a socket stamps on every header it sends.
 
+#include <memory>
 #include <string>
 
 #include <zmq.hpp>
+
+#include "common/transport/curve_guard.h"
 
 namespace hexplore::transport {
 
@@ -23,10 +26,18 @@ class Context {
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
+  ~Context();
+
   zmq::context_t& zmq() { return context_; }
+
+  // Starts the ZAP handler that admits only the keyring's members to this process's CURVE
+  // servers; needed before a socket with SocketOptions::curve binds on tcp. Once per context.
+  void enable_curve(std::shared_ptr<const CurveKeyring> keyring, CurveGuard::OnRefused on_refused = {});
+  CurveGuard* curve_guard() { return guard_.get(); }
 
  private:
   zmq::context_t context_;
+  std::unique_ptr<CurveGuard> guard_;  // closed before context_ terminates
 };
 
 }  // namespace hexplore::transport

@@ -20,6 +20,7 @@ Publisher::Publisher(Context& context, Identity identity, const std::string& bin
       rng_(options_.faults.seed) {
   options_.validate();
   detail::apply_options(socket_, options_);
+  detail::guard_server(context, socket_, options_);
   bind(bind_endpoint);
   header_ = make_header(identity_, 0, "", 0);
   // The station is the experiment's recorder, not a robot on the radio.
@@ -35,7 +36,7 @@ Publisher::~Publisher() {
   socket_.close();
 }
 
-void Publisher::bind(const std::string& endpoint) { endpoints_.push_back(detail::bind(socket_, endpoint)); }
+void Publisher::bind(const std::string& endpoint) { endpoints_.push_back(detail::bind(socket_, endpoint, options_)); }
 
 uint64_t Publisher::last_sequence(std::string_view topic) const {
   auto it = sequences_.find(topic);

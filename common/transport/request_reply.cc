@@ -46,7 +46,8 @@ Responder::Responder(Context& context, Identity identity, const std::string& bin
       socket_(context.zmq(), zmq::socket_type::router) {
   options_.validate();
   detail::apply_options(socket_, options_);
-  endpoint_ = detail::bind(socket_, bind_endpoint);
+  detail::guard_server(context, socket_, options_);
+  endpoint_ = detail::bind(socket_, bind_endpoint, options_);
 }
 
 Responder::~Responder() { socket_.close(); }
@@ -143,7 +144,7 @@ Requester::Requester(Context& context, Identity identity, const std::string& con
   detail::apply_options(socket_, options_);
   // A request still queued at close can never be answered: do not let it hold up shutdown.
   socket_.set(zmq::sockopt::linger, 0);
-  detail::connect(socket_, connect_endpoint);
+  detail::connect(socket_, connect_endpoint, options_, peer_);
 }
 
 Requester::~Requester() { socket_.close(); }

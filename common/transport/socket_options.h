@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/core/team_config.h"
+#include "common/transport/curve_keys.h"
 #include "common/transport/link_model.h"
 #include "common/transport/payload_codec.h"
 #include "common/transport/roster.h"
@@ -52,6 +53,10 @@ struct SocketOptions {
   // The robot this socket belongs to (whose radio receives): the socket's identity for
   // publishers and requesters, this field for subscribers.
   std::string receiver_robot;
+  // CURVE on tcp endpoints (null: plain ZeroMQ): binding sockets are servers with this pair,
+  // connecting ones clients that check the server's key. ipc and inproc stay within one host
+  // (file permissions, one process) and are left plain.
+  std::shared_ptr<const CurveCredentials> curve;
 
   static SocketOptions from_config(const core::TransportConfig& config);
   // Throws std::invalid_argument naming the bad field.

@@ -38,7 +38,9 @@ Subscriber::Subscriber(Subscriber&&) noexcept = default;
 Subscriber& Subscriber::operator=(Subscriber&&) noexcept = default;
 Subscriber::~Subscriber() = default;
 
-void Subscriber::connect(const std::string& endpoint) { detail::connect(state_->socket, endpoint); }
+void Subscriber::connect(const std::string& endpoint, const std::string& peer) {
+  detail::connect(state_->socket, endpoint, state_->options, peer);
+}
 
 void Subscriber::add_handler(std::string prefix, const std::string& type, Dispatch dispatch) {
   if (!topics::is_valid_prefix(prefix))

@@ -43,7 +43,8 @@ class Subscriber : public Pollable {
   ~Subscriber() override;
 
   // Connects to a publisher; may be called before that publisher binds (ZeroMQ retries).
-  void connect(const std::string& endpoint);
+  // `peer`: the member the publisher belongs to, whose public key a CURVE client checks.
+  void connect(const std::string& endpoint, const std::string& peer = "");
 
   // Calls `handler` for every message whose topic starts with `topic_prefix` and whose
   // header says payload type M. Several handlers may share a prefix; each message goes to
