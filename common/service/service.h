@@ -25,6 +25,7 @@
 #include "common/transport/request_reply.h"
 #include "common/transport/socket_options.h"
 #include "common/transport/subscriber.h"
+#include "hexplore/v1/mission.pb.h"
 #include "hexplore/v1/status.pb.h"
 
 namespace hexplore::service {
@@ -85,8 +86,14 @@ class ServiceContext {
   transport::Responder& responder();
   // This service's SUB socket; connect() it to the publishers it listens to.
   transport::Subscriber& subscriber();
-  // Connects subscriber() to the PUB socket of (robot_id, service); idempotent.
+  // Connects subscriber() to the PUB socket of (robot_id, service); idempotent. The station's
+  // is not among them: mission commands come through on_mission().
   void connect(const std::string& robot_id, core::ServiceKind service);
+  // Calls `handler` for every mission command (start, stop, estop, planner switch) the station
+  // publishes. They arrive on a SUB socket of their own connected to the station alone, so on
+  // authenticated links (transport.curve_keys_dir) only the holder of the station's key can
+  // command a robot: a teammate's publisher cannot inject one on team/mission.
+  void on_mission(std::function<void(const v1::MissionCommand&)> handler);
   // An extra SUB socket (e.g. its own high-water mark), owned and polled like subscriber().
   transport::Subscriber& make_subscriber(const transport::SocketOptions& options);
   // A DEALER connected to the ROUTER of (robot_id, service); one per target, reused.
@@ -130,6 +137,7 @@ class ServiceContext {
   std::unique_ptr<transport::Publisher> publisher_;
   std::unique_ptr<transport::Responder> responder_;
   std::vector<std::unique_ptr<transport::Subscriber>> subscribers_;  // [0] is subscriber()
+  transport::Subscriber* station_subscriber_ = nullptr;               // on_mission()'s, station only
   std::map<std::string, std::unique_ptr<transport::Requester>> requesters_;
   std::map<std::string, bool> connected_;
   v1::ServiceState state_ = v1::SERVICE_STATE_STARTING;

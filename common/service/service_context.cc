@@ -69,7 +69,21 @@ transport::Subscriber& ServiceContext::make_subscriber(const transport::SocketOp
   return *subscribers_.back();
 }
 
+void ServiceContext::on_mission(std::function<void(const v1::MissionCommand&)> handler) {
+  if (station_subscriber_ == nullptr) {
+    station_subscriber_ = &make_subscriber(socket_options());
+    const std::string station(core::kStationId);
+    station_subscriber_->connect(
+        core::connect_endpoint(*team_, station, core::ServiceKind::kStation, core::SocketRole::kPublish), station);
+  }
+  station_subscriber_->on<v1::MissionCommand>(
+      std::string(transport::topics::kTeamMission),
+      [handler = std::move(handler)](const transport::Received<v1::MissionCommand>& r) { handler(r.message); });
+}
+
 void ServiceContext::connect(const std::string& robot_id, core::ServiceKind service) {
+  if (service == core::ServiceKind::kStation)
+    throw std::invalid_argument("connect: the station's commands come through on_mission()");
   const std::string endpoint = core::connect_endpoint(*team_, robot_id, service, core::SocketRole::kPublish);
   if (connected_[endpoint]) return;
   subscriber().connect(endpoint, robot_id);

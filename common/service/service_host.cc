@@ -48,7 +48,8 @@ ServiceHost::ServiceHost(core::TeamConfig team, HostOptions options)
   wire_.roster = team_options.roster;
   wire_.codecs = team_options.codecs;
   // Authenticated team links: the guard admits only the team's keys to this process's servers.
-  wire_.keyring = team_keyring(team_);
+  // Only tcp sockets use them (ipc and inproc stay on the host), so a composed team needs no keys.
+  if (team_.transport.scheme == "tcp") wire_.keyring = team_keyring(team_);
   if (wire_.keyring) {
     metrics::CounterFamily* refused = registry_->counter_family(
         "hexplore_transport_rejected_peers_total",

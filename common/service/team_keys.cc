@@ -1,5 +1,6 @@
 #include "common/service/team_keys.h"
 
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
@@ -8,13 +9,17 @@
 
 namespace hexplore::service {
 
-std::shared_ptr<const transport::CurveKeyring> team_keyring(const core::TeamConfig& team) {
-  if (team.transport.curve_keys_dir.empty()) return nullptr;
+std::vector<std::string> key_members(const core::TeamConfig& team) {
   std::vector<std::string> members;
   for (const auto& r : team.robots) members.push_back(r.id);
   members.emplace_back(core::kStationId);
+  return members;
+}
+
+std::shared_ptr<const transport::CurveKeyring> team_keyring(const core::TeamConfig& team) {
+  if (team.transport.curve_keys_dir.empty()) return nullptr;
   try {
-    return transport::CurveKeyring::load(team.transport.curve_keys_dir, members);
+    return transport::CurveKeyring::load(team.transport.curve_keys_dir, key_members(team));
   } catch (const std::runtime_error& e) {
     throw core::ConfigError(team.source_file, "transport.curve_keys_dir", e.what());
   }
@@ -33,6 +38,19 @@ std::shared_ptr<const transport::CurveCredentials> member_credentials(
     throw core::ConfigError(team.source_file, "transport.curve_keys_dir", e.what());
   }
   return credentials;
+}
+
+int make_missing_team_keys(const core::TeamConfig& team, bool replace) {
+  const std::filesystem::path dir(team.transport.curve_keys_dir);
+  if (dir.empty()) return 0;
+  int made = 0;
+  for (const auto& m : key_members(team)) {
+    if (!replace && std::filesystem::exists(dir / (m + ".secret")) && std::filesystem::exists(dir / (m + ".public")))
+      continue;
+    transport::write_curve_key_pair(dir.string(), m, transport::generate_curve_key_pair());
+    ++made;
+  }
+  return made;
 }
 
 }  // namespace hexplore::service

@@ -117,7 +117,9 @@ void Responder::handle(std::vector<zmq::message_t>& frames) {
   ReplyOut out{options_, to_teammate(options_, identity_.robot_id, header.robot_id()), {}, 0};
   bool parsed = false;
   try {
-    parsed = it->second.handle(header, frames[3].to_string_view(), wire_bytes, out);
+    // The CURVE guard's name for the peer (ZAP User-Id), on every frame of an authenticated link.
+    const char* member = zmq_msg_gets(frames[2].handle(), "User-Id");
+    parsed = it->second.handle(header, frames[3].to_string_view(), wire_bytes, member ? member : "", out);
   } catch (const std::exception& e) {
     core::log_once(core::LogLevel::kError, "transport", "handler-threw:" + header.payload_type(),
                    "handler for " + header.payload_type() + " threw: " + e.what());

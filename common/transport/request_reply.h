@@ -44,10 +44,12 @@ class Responder : public Pollable {
   void serve(std::function<Rep(const Received<Req>&)> handler) {
     add_handler(type_name<Req>(), type_name<Rep>(),
                 [handler = std::move(handler), request = Req()](const v1::Header& header, std::string_view data,
-                                                                size_t wire_bytes, ReplyOut& reply_out) mutable {
+                                                                size_t wire_bytes, std::string_view member,
+                                                                ReplyOut& reply_out) mutable {
                   request.Clear();
                   if (!request.ParseFromArray(data.data(), static_cast<int>(data.size()))) return false;
-                  const Rep reply = handler(Received<Req>{request_topic(type_name<Req>()), header, request, wire_bytes});
+                  const Rep reply =
+                      handler(Received<Req>{request_topic(type_name<Req>()), header, request, wire_bytes, member});
                   reply_out.encode(reply);
                   return true;
                 });
@@ -71,7 +73,8 @@ class Responder : public Pollable {
     uint8_t flags = 0;
     void encode(const google::protobuf::MessageLite& reply);
   };
-  using Handle = std::function<bool(const v1::Header&, std::string_view, size_t, ReplyOut&)>;
+  // (header, payload, wire bytes, authenticated member or "", reply) -> parsed
+  using Handle = std::function<bool(const v1::Header&, std::string_view, size_t, std::string_view, ReplyOut&)>;
   void add_handler(const std::string& request_type, const std::string& reply_type, Handle handle);
   void reply(zmq::message_t& routing_id, const v1::Header& request, std::string_view reply_type,
              const ReplyOut* payload);

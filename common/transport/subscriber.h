@@ -31,6 +31,9 @@ struct Received {
   const v1::Header& header;
   const M& message;
   size_t wire_bytes = 0;  // what it took on the wire: topic, header and payload frames
+  // The team member whose key the link proved (CURVE, set on requests a Responder serves);
+  // "" on a plain link. Unlike header.robot_id() it cannot be claimed by the sender.
+  std::string_view authenticated_member = {};
 };
 
 class Subscriber : public Pollable {

@@ -117,7 +117,6 @@ void PlanningService::setup(service::ServiceContext& context) {
     context.connect(r.id, core::ServiceKind::kSim);
     if (r.id != robot_id_) context.connect(r.id, core::ServiceKind::kPlanning);
   }
-  context.connect(std::string(core::kStationId), core::ServiceKind::kStation);
 
   auto& sub = context.subscriber();
   sub.on<v1::FusedMapUpdate>(topics::hlmap(robot_id_),
@@ -165,8 +164,7 @@ void PlanningService::setup(service::ServiceContext& context) {
     const auto& counts = r.message.given_up_voxel_counts();
     for (int i = 0; i < keys.size(); ++i) ledger_.merge(keys[i], i < counts.size() ? int(counts[i]) : 0);
   });
-  sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
-                             [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
+  context.on_mission([this](const v1::MissionCommand& command) { on_mission(command); });
   context.responder().serve<v1::OpenTargetsRequest, v1::OpenTargetsReport>(
       [this](const transport::Received<v1::OpenTargetsRequest>&) { return open_targets_report(); });
   request_snapshot();

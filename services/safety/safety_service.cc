@@ -104,7 +104,6 @@ void SafetyService::setup(service::ServiceContext& context) {
     context.connect(robot.id, core::ServiceKind::kSim);
     context.connect(robot.id, core::ServiceKind::kSafety);
   }
-  context.connect(std::string(core::kStationId), core::ServiceKind::kStation);
 
   auto& sub = context.subscriber();
   sub.on<v1::RobotPose>(topics::pose(robot_id_), [this](const transport::Received<v1::RobotPose>& r) {
@@ -132,8 +131,7 @@ void SafetyService::setup(service::ServiceContext& context) {
     peer.fragment_ns = context_->now_ns();
     peer.fragment_sim_ns = r.header.sim_time_ns();
   });
-  sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
-                             [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
+  context.on_mission([this](const v1::MissionCommand& command) { on_mission(command); });
 
   const auto period = std::chrono::duration_cast<std::chrono::nanoseconds>(
       std::chrono::duration<double>(resolver_->options().cycle_s));

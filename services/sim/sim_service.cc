@@ -110,15 +110,13 @@ void SimService::setup(service::ServiceContext& context) {
   context.connect(robot_id_, core::ServiceKind::kSafety);
   for (const auto& other : context.team().robots)
     if (other.id != robot_id_) context.connect(other.id, core::ServiceKind::kSim);
-  context.connect(std::string(core::kStationId), core::ServiceKind::kStation);
   auto& sub = context.subscriber();
   sub.on<v1::MotionCommand>(topics::motion(robot_id_),
                             [this](const transport::Received<v1::MotionCommand>& r) { on_motion(r.message); });
   sub.on<v1::RobotPose>(std::string(topics::kSimBody), [this](const transport::Received<v1::RobotPose>& r) {
     on_body(r.header.robot_id(), r.message);
   });
-  sub.on<v1::MissionCommand>(std::string(topics::kTeamMission),
-                             [this](const transport::Received<v1::MissionCommand>& r) { on_mission(r.message); });
+  context.on_mission([this](const v1::MissionCommand& command) { on_mission(command); });
 
   // In lockstep the loop's clock is sim time itself: one step per step period, as fast as the
   // team can go; otherwise the real-time factor turns a sim step into a wall-clock period.

@@ -10,6 +10,7 @@
 #include "common/core/config_error.h"
 #include "common/core/endpoints.h"
 #include "common/service/service.h"
+#include "common/service/team_keys.h"
 #include "hexplore/v1/mission.pb.h"
 #include "hexplore/v1/status.pb.h"
 #include "services/station/station_service.h"
@@ -35,11 +36,20 @@ int send_command(const std::string& config_path, const std::string& what) {
     std::fprintf(stderr, "error: --send expects start, stop, estop or planner=<name>, got '%s'\n", what.c_str());
     return 2;
   }
+  // On authenticated links the operator speaks with the station's key (the only one the station
+  // takes commands from).
+  transport::SocketOptions options = service::team_socket_options(team);
+  try {
+    options.curve = service::member_credentials(team, service::team_keyring(team), std::string(core::kStationId));
+  } catch (const core::ConfigError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
   transport::Context context;
   transport::Requester requester(
       context, {"station-cli", "", "station"},
       core::connect_endpoint(team, std::string(core::kStationId), core::ServiceKind::kStation, core::SocketRole::kRequest),
-      service::team_socket_options(team));
+      options, nullptr, std::string(core::kStationId));
   const auto reply = requester.call<v1::MissionCommand, v1::ServiceStatus>(command, std::chrono::milliseconds(3000));
   if (!reply) {
     std::fprintf(stderr, "error: no station answered at %s\n",
@@ -49,7 +59,7 @@ int send_command(const std::string& config_path, const std::string& what) {
     return 1;
   }
   std::printf("%s\n", reply->detail().c_str());
-  return 0;
+  return reply->detail().rfind("refused", 0) == 0 ? 1 : 0;
 }
 
 }  // namespace

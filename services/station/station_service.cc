@@ -112,11 +112,27 @@ void StationService::setup(service::ServiceContext& context) {
   gauges_ = std::make_unique<StationGauges>(context.metrics(), context.team());
 
   subscribe_team(context);
+  // On authenticated links only the holder of the station's key may command the team (an
+  // operator's tool uses it: `hexplore_station --send`); a robot's key may not.
+  const bool authenticated = context.socket_options().curve != nullptr;
+  metrics::Counter* refused = context.metrics()
+                                  .counter_family("hexplore_station_refused_commands_total",
+                                                  "Mission command requests refused: not from the station's key")
+                                  ->add({});
   context.responder().serve<v1::MissionCommand, v1::ServiceStatus>(
-      [this](const transport::Received<v1::MissionCommand>& request) {
-        publish_mission(request.message);
+      [this, authenticated, refused](const transport::Received<v1::MissionCommand>& request) {
         v1::ServiceStatus ack;
         ack.set_service("station");
+        if (authenticated && request.authenticated_member != core::kStationId) {
+          refused->increment();
+          core::log_once(core::LogLevel::kWarn, "station", "refused-command:" + std::string(request.authenticated_member),
+                         "refused a mission command from '" + std::string(request.authenticated_member) +
+                             "': only the station's key may command the team (logged once per member)");
+          ack.set_state(v1::SERVICE_STATE_RUNNING);
+          ack.set_detail("refused: mission commands are accepted only from the station's key");
+          return ack;
+        }
+        publish_mission(request.message);
         ack.set_state(v1::SERVICE_STATE_RUNNING);
         ack.set_detail("relayed " + request.message.ShortDebugString());
         return ack;

@@ -7,14 +7,11 @@
 // Usage: hexplore_keys --config TEAM.yaml [--out DIR] [--force]
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <string>
-#include <vector>
 
 #include "common/core/config_error.h"
-#include "common/core/endpoints.h"
 #include "common/core/team_config.h"
-#include "common/transport/curve_keys.h"
+#include "common/service/team_keys.h"
 
 namespace {
 
@@ -43,28 +40,21 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
-  if (out.empty()) out = team.transport.curve_keys_dir;
-  if (out.empty()) return usage("the team file has no transport.curve_keys_dir; name the folder with --out");
-  std::vector<std::string> members;
-  for (const auto& r : team.robots) members.push_back(r.id);
-  members.emplace_back(core::kStationId);
+  if (!out.empty()) team.transport.curve_keys_dir = out;
+  if (team.transport.curve_keys_dir.empty())
+    return usage("the team file has no transport.curve_keys_dir; name the folder with --out");
+  const size_t members = service::key_members(team).size();
   int made = 0;
   try {
-    for (const auto& m : members) {
-      const bool exists = std::filesystem::exists(std::filesystem::path(out) / (m + ".secret")) &&
-                          std::filesystem::exists(std::filesystem::path(out) / (m + ".public"));
-      if (exists && !force) continue;
-      transport::write_curve_key_pair(out, m, transport::generate_curve_key_pair());
-      ++made;
-    }
+    made = service::make_missing_team_keys(team, force);
     // Read back as the services will: every public key present, distinct, each secret its own.
-    const auto ring = transport::CurveKeyring::load(out, members);
-    for (const auto& m : members) ring->own_pair(m);
+    const auto ring = service::team_keyring(team);
+    for (const auto& m : service::key_members(team)) service::member_credentials(team, ring, m);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   }
-  std::printf("%s: %d new key pair(s), %zu members (%zu kept)\n", out.c_str(), made, members.size(),
-              members.size() - size_t(made));
+  std::printf("%s: %d new key pair(s), %zu members (%zu kept)\n", team.transport.curve_keys_dir.c_str(), made,
+              members, members - size_t(made));
   return 0;
 }
