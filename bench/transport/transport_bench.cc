@@ -4,6 +4,9 @@
 // a copy of itself (--sink) that subscribes and prints the receiving side's figures.
 //
 //   transport_bench [--count N] [--latency-seconds S] [--payload-bytes B] [--wire-only true]
+//                   [--curve DIR]
+// --curve DIR: both ends on authenticated, encrypted links (ZeroMQ CURVE), with key pairs for
+// "source" and "sink" made in DIR when missing: the cost of team links with keys.
 // It first prints the bytes typical team messages take on the radio, schema v1 against v2
 // (team_message_bytes.h); --wire-only true stops there.
 
@@ -16,6 +19,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <thread>
 #include <vector>
@@ -38,7 +42,19 @@ struct Args {
   int latency_seconds = 5;
   size_t payload_bytes = 200;
   std::string sink_endpoint;  // non-empty: run as the receiving child
+  std::string curve_dir;      // non-empty: CURVE with the pairs in this folder
 };
+
+// `member`'s CURVE credentials from args.curve_dir (pairs made for both ends when missing);
+// null without --curve.
+std::shared_ptr<const transport::CurveCredentials> bench_curve(const Args& args, const std::string& member) {
+  if (args.curve_dir.empty()) return nullptr;
+  for (const char* m : {"source", "sink"})
+    if (!std::filesystem::exists(std::filesystem::path(args.curve_dir) / (std::string(m) + ".secret")))
+      transport::write_curve_key_pair(args.curve_dir, m, transport::generate_curve_key_pair());
+  const auto ring = transport::CurveKeyring::load(args.curve_dir, {"source", "sink"});
+  return std::make_shared<transport::CurveCredentials>(transport::CurveCredentials{member, ring->own_pair(member), ring});
+}
 
 transport::SocketOptions bench_options() {
   transport::SocketOptions options;
@@ -60,7 +76,9 @@ int run_sink(const Args& args) {
   const auto families = metrics::TransportFamilies::create(registry);
   transport::Context context;
   transport::Accounting accounting("sink", "bench", &families);
-  transport::Subscriber subscriber(context, bench_options(), &accounting);
+  transport::SocketOptions options = bench_options();
+  options.curve = bench_curve(args, "sink");
+  transport::Subscriber subscriber(context, options, &accounting);
   transport::EventLoop loop;
   bool subscribed = false;
   uint64_t received = 0;
@@ -109,7 +127,7 @@ int run_sink(const Args& args) {
     std::fflush(stdout);
     loop.stop();
   });
-  subscriber.connect(args.sink_endpoint);
+  subscriber.connect(args.sink_endpoint, "source");
   loop.add(subscriber);
   loop.run();
   return 0;
@@ -143,8 +161,11 @@ int run_source(const Args& args, const char* self) {
   const auto families = metrics::TransportFamilies::create(registry);
   transport::Context context;
   transport::Accounting accounting("source", "bench", &families);
-  transport::Publisher publisher(context, transport::Identity{"source", "", "bench"}, "tcp://127.0.0.1:*",
-                                 bench_options(), &accounting);
+  transport::SocketOptions options = bench_options();
+  options.curve = bench_curve(args, "source");
+  if (options.curve) context.enable_curve(options.curve->keyring);
+  transport::Publisher publisher(context, transport::Identity{"source", "", "bench"}, "tcp://127.0.0.1:*", options,
+                                 &accounting);
 
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) return 1;
@@ -152,8 +173,9 @@ int run_source(const Args& args, const char* self) {
   const pid_t child = fork();
   if (child == 0) {
     dup2(fds[1], STDOUT_FILENO);
+    const char* curve = args.curve_dir.empty() ? nullptr : "--curve";  // ends the list without --curve
     execl(self, self, "--sink", publisher.endpoint().c_str(), "--count", count.c_str(), "--payload-bytes",
-          bytes.c_str(), static_cast<char*>(nullptr));
+          bytes.c_str(), curve, args.curve_dir.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
   close(fds[1]);
@@ -166,8 +188,8 @@ int run_source(const Args& args, const char* self) {
     return 1;
   }
   message.set_counter(args.count);
-  std::printf("transport_bench: tcp loopback, %zu-byte blob (%zu-byte TestPayload, plus topic and Header frames)\n",
-              args.payload_bytes, message.ByteSizeLong());
+  std::printf("transport_bench: tcp loopback%s, %zu-byte blob (%zu-byte TestPayload, plus topic and Header frames)\n",
+              options.curve ? " with CURVE" : "", args.payload_bytes, message.ByteSizeLong());
 
   // Phase 1: back-to-back.
   const int64_t start = core::monotonic_ns();
@@ -214,10 +236,11 @@ int main(int argc, char** argv) {
     else if (flag == "--payload-bytes") args.payload_bytes = std::stoul(value);
     else if (flag == "--sink") args.sink_endpoint = value;
     else if (flag == "--wire-only") wire_only = std::string(value) == "true";
+    else if (flag == "--curve") args.curve_dir = value;
     else {
       std::fprintf(stderr,
                    "error: unknown flag %s\nusage: %s [--count N] [--latency-seconds S] [--payload-bytes B] "
-                   "[--wire-only true]\n",
+                   "[--wire-only true] [--curve DIR]\n",
                    flag.c_str(), argv[0]);
       return 2;
     }

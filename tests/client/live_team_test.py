@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The Python client against a real team: starts deploy/teams/small-building.yaml (one
 SLUGCAT, one MR1000, every service its own process) through hexplore_launch on free loopback
-ports, and checks that
+ports, on authenticated links (the team file's transport.curve_keys_dir: the launcher makes the
+keys, the client uses the station's pair), and checks that
 
 - `watch` sees every robot's pose (robot/<id>/pose, and team/pose through the client's own
   decoder of the radio codec, matching the sim's pose of the same instant to the centimetre),
@@ -114,6 +115,10 @@ def main(argv):
         start = time.monotonic()
         # 1. Watch: every robot, every service, poses both ways, planning rounds, byte rates.
         s = snapshot("--window", "10")
+        # The team file names transport.curve_keys_dir: the launcher made the keys, and the client
+        # watches and commands over CURVE with the station's pair.
+        expect((work / "keys" / "small-building" / "station.secret").exists(),
+               "no keys in the team's folder: the team did not run on authenticated links")
         expect(len(s["senders_heard"]) == s["senders_expected"],
                f"heard {s['senders_heard']}, expected {s['senders_expected']} senders")
         expect((s["mission_time_s"] or 0) > 0, "no mission time from the station's status")

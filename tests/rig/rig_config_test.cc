@@ -142,12 +142,30 @@ TEST_F(RigConfigTest, DependenciesWaitForHealthyServicesThatExist) {
     ASSERT_TRUE(depends.IsMap()) << "depends_on must name conditions";
     ++with_dependencies;
     for (const auto& dep : depends) {
-      EXPECT_TRUE(services[dep.first.as<std::string>()]) << dep.first.as<std::string>() << " is not a service";
-      EXPECT_EQ(dep.second["condition"].as<std::string>(""), "service_healthy") << dep.first.as<std::string>();
+      const auto name = dep.first.as<std::string>();
+      EXPECT_TRUE(services[name]) << name << " is not a service";
+      // The one-shot key maker is waited for until it has finished; services until they are healthy.
+      EXPECT_EQ(dep.second["condition"].as<std::string>(""),
+                name == "keys" ? "service_completed_successfully" : "service_healthy")
+          << name;
     }
   }
   EXPECT_GE(with_dependencies, static_cast<int>(team_.robots.size() * 4 + 1));
   EXPECT_TRUE(services["station"]["depends_on"]) << "the station starts the mission: it must wait for the team";
+}
+
+TEST_F(RigConfigTest, AuthenticatedTeamsMakeTheirKeysBeforeAnyServiceStarts) {
+  ASSERT_FALSE(team_.transport.curve_keys_dir.empty()) << "the rig's team runs on authenticated links";
+  const auto services = compose_["services"];
+  const auto keys = services["keys"];
+  ASSERT_TRUE(keys.IsMap()) << "no keys service";
+  std::string command;
+  for (const auto& word : keys["entrypoint"]) command += word.as<std::string>() + " ";
+  EXPECT_NE(command.find("hexplore_keys --config /etc/hexplore/teams/multi-building.yaml"), std::string::npos) << command;
+  // Every chain starts after it: each robot's sim (its other services wait for their sim) and the station.
+  for (const auto& robot : team_.robots)
+    EXPECT_TRUE(services[robot.id + "-sim"]["depends_on"]["keys"]) << robot.id << "-sim does not wait for the keys";
+  EXPECT_TRUE(services["station"]["depends_on"]["keys"]) << "the station does not wait for the keys";
 }
 
 TEST_F(RigConfigTest, ObservabilityIsAnOptInProfile) {

@@ -12,6 +12,7 @@
 
 #include "common/core/config_error.h"
 #include "common/core/team_config.h"
+#include "common/service/team_keys.h"
 #include "tools/launcher/launch_plan.h"
 #include "tools/launcher/supervisor.h"
 
@@ -77,6 +78,13 @@ int main(int argc, char** argv) {
   try {
     const core::TeamConfig team = core::load_team_config(request.config_path);
     plan = launcher::plan_launch(team, request, argv[0]);
+    // Authenticated links need every member's keys before the first process starts: made here
+    // when missing (kept when present, so a running team's keys stay valid), as hexplore_keys would.
+    const bool processes = request.compose_executable.empty() && team.transport.scheme == "tcp";
+    if (processes && !team.transport.curve_keys_dir.empty()) {
+      if (const int made = service::make_missing_team_keys(team))
+        std::cerr << "hexplore_launch: made " << made << " CURVE key pair(s) in " << team.transport.curve_keys_dir << "\n";
+    }
   } catch (const std::exception& e) {
     std::cerr << "hexplore_launch: error: " << e.what() << "\n";
     return 2;

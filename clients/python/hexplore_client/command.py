@@ -40,6 +40,7 @@ def send(team, messages, command, host=None, timeout_s=3.0, context=None):
     sock = (context or zmq.Context.instance()).socket(zmq.DEALER)
     sock.setsockopt(zmq.LINGER, 0)
     try:
+        team.secure(sock, STATION_ID)
         sock.connect(endpoint)
         header = wire.encode_named_header(CLIENT_ID, "", "client", command.DESCRIPTOR.full_name, 1,
                                           wall_time_us=time.time_ns() // 1000)

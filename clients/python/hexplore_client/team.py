@@ -5,6 +5,7 @@ deploy/teams/ itself instead of depending on a YAML library; anything else it do
 understand is ignored (the services validate the file in full).
 """
 
+import os
 from dataclasses import dataclass, field
 from typing import Dict, List, Tuple
 
@@ -49,10 +50,46 @@ class Team:
         h = host or t.get("host_template", "127.0.0.1").replace("{robot}", robot_id).replace("{service}", service)
         return f"tcp://{h}:{port}"
 
+    def keys_dir(self):
+        """transport.curve_keys_dir, relative to the team file's folder; None on plain links."""
+        d = self.transport.get("curve_keys_dir", "")
+        if not d or self.transport.get("scheme", "tcp") != "tcp":
+            return None
+        return d if os.path.isabs(d) else os.path.normpath(os.path.join(os.path.dirname(self.path), d))
+
+    def secure(self, sock, peer: str, member: str = STATION_ID):
+        """Before sock.connect() to a socket of `peer`: on authenticated links (ZeroMQ CURVE,
+        common/transport/curve_keys.h) the client speaks as `member` (an operator holds the
+        station's pair: the only key the station takes commands from) and checks that the server
+        holds `peer`'s secret. A plain team: nothing to do."""
+        d = self.keys_dir()
+        if d is None:
+            return
+
+        def read(name):
+            path = os.path.join(d, name)
+            try:
+                with open(path) as f:
+                    return f.readline().strip().encode()
+            except OSError as e:
+                raise TeamFileError(f"{self.path}: the team's links are authenticated (transport.curve_keys_dir) "
+                                    f"but {path} cannot be read ({e.strerror}); hexplore_launch or "
+                                    f"hexplore_keys --config {self.path} makes the keys") from e
+
+        sock.setsockopt(zmq_option("CURVE_SERVERKEY"), read(f"{peer}.public"))
+        sock.setsockopt(zmq_option("CURVE_PUBLICKEY"), read(f"{member}.public"))
+        sock.setsockopt(zmq_option("CURVE_SECRETKEY"), read(f"{member}.secret"))
+
     def publishers(self, host: str = None):
         """(robot, service, endpoint) of every PUB socket of the team, the station's last."""
         out = [(r, s, self.endpoint(r, s, 0, host)) for r in self.robot_ids for s in ROBOT_SERVICES]
         return out + [(STATION_ID, "station", self.endpoint(STATION_ID, "station", 0, host))]
+
+
+def zmq_option(name):
+    """A pyzmq socket option by name (imported here: reading a team file needs no zmq)."""
+    import zmq
+    return getattr(zmq, name)
 
 
 def _strip_comment(line: str) -> str:

@@ -56,7 +56,8 @@ class Watcher:
         for p in prefixes:
             self.sock.setsockopt(zmq.SUBSCRIBE, p)
         self.endpoints = [e for _, _, e in team.publishers(host)]
-        for e in self.endpoints:
+        for robot, _, e in team.publishers(host):
+            team.secure(self.sock, robot)  # the server key of each connection, set before it
             self.sock.connect(e)
         self.robots = {r: RobotView(s) for r, s in team.robots}
         self.station = RobotView()
