@@ -40,6 +40,8 @@ robots:
 transport:
   scheme: tcp
   base_port: $port
+  # Authenticated links, as the deploy/teams files: the launcher makes the keys in $work/keys.
+  curve_keys_dir: keys
 params:
   seed: 1
   # As in deploy/teams: the simulated LiDARs fire at 2 Hz, a fifth of the paper's point rate.
