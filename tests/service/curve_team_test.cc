@@ -15,6 +15,7 @@
 #include "common/transport/event_loop.h"
 #include "common/transport/request_reply.h"
 #include "common/transport/subscriber.h"
+#include "hexplore/v1/mission.pb.h"
 #include "hexplore/v1/status.pb.h"
 #include "hexplore/v1/test_messages.pb.h"
 #include "tests/support/scratch_dir.h"
@@ -42,9 +43,9 @@ double metric(int port, const std::string& series) {
     return -1.0;
   std::stringstream body;
   body << std::ifstream(file).rdbuf();
-  const std::string text = body.str();
-  const size_t at = text.find(series + " ");
-  return at == std::string::npos ? 0.0 : std::stod(text.substr(at + series.size() + 1));
+  const std::string text = "\n" + body.str();  // a sample starts a line (not "# HELP <name> ...")
+  const size_t at = text.find("\n" + series + " ");
+  return at == std::string::npos ? 0.0 : std::stod(text.substr(at + series.size() + 2));
 }
 
 TEST(CurveTeam, KeysToolThenTheTeamWorksAndRoguesAreRefusedAndCounted) {
@@ -122,6 +123,39 @@ TEST(CurveTeam, KeysToolThenTheTeamWorksAndRoguesAreRefusedAndCounted) {
   EXPECT_EQ(a.output().find("refused a peer with an unknown CURVE key"),
             a.output().rfind("refused a peer with an unknown CURVE key"))
       << "logged more than once per key:\n" << a.output();
+}
+
+// The station relays mission commands only for the holder of the station's key: a robot's key
+// (a teammate, or whoever stole it) is refused and counted.
+TEST(CurveTeam, OnlyTheStationsKeyCommandsTheTeam) {
+  const hexplore::testing::ScratchDir dir("curve_station");
+  const std::string path = write_team(dir);
+  ChildProcess keys({HEXPLORE_KEYS_PATH, "--config", path});
+  ASSERT_EQ(keys.wait_exit(30s), 0) << keys.output();
+  const core::TeamConfig team = core::load_team_config(path);
+  ChildProcess station({STATION_PATH, "--config", path, "--results", dir.file("results"), "--report", "false",
+                        "--autostart", "false", "--metrics-port", "-1"});
+  const auto metrics_line = station.wait_for_line("serving /metrics on port ", 20s);
+  ASSERT_TRUE(metrics_line) << station.output();
+  const int metrics_port = std::stoi(metrics_line->substr(metrics_line->rfind(' ') + 1));
+  const std::string endpoint =
+      core::connect_endpoint(team, std::string(core::kStationId), core::ServiceKind::kStation, core::SocketRole::kRequest);
+  const auto ring = team_keyring(team);
+  v1::MissionCommand stop;
+  stop.mutable_stop();
+  auto ask = [&](const std::string& member) -> std::string {
+    transport::SocketOptions options;
+    options.curve = member_credentials(team, ring, member);
+    transport::Context context;
+    transport::Requester requester(context, {member, "", "test"}, endpoint, options, nullptr,
+                                   std::string(core::kStationId));
+    for (int attempt = 0; attempt < 10; ++attempt)  // the station may still be starting
+      if (const auto reply = requester.call<v1::MissionCommand, v1::ServiceStatus>(stop, 2000ms)) return reply->detail();
+    return "no reply";
+  };
+  EXPECT_EQ(ask("a").rfind("refused", 0), 0u) << "a robot's key commanded the team";
+  EXPECT_EQ(ask(std::string(core::kStationId)).rfind("relayed", 0), 0u);
+  EXPECT_GE(metric(metrics_port, "hexplore_station_refused_commands_total"), 1.0);
 }
 
 }  // namespace
