@@ -236,6 +236,9 @@ void validate(const TeamConfig& c) {
   require(t.base_port > 0 && t.base_port < 65535, c, "transport.base_port", "must be a port number");
   require(t.ports_per_robot >= 12, c, "transport.ports_per_robot", "must be >= 12 (6 services x 2 sockets)");
   require(t.max_message_bytes > 0, c, "transport.max_message_bytes", "must be > 0");
+  for (size_t i = 0; i < t.radio.outages.size(); ++i)
+    require(ids.count(t.radio.outages[i].robot) > 0, c, "transport.radio.outages[" + std::to_string(i) + "].robot",
+            "unknown robot '" + t.radio.outages[i].robot + "'");
   const auto& p = c.params;
   require(p.map_resolution_m >= 0.02 && p.map_resolution_m <= 1.0, c, "params.map_resolution_m", "must be in [0.02, 1]");
   require(p.eta_s_m > p.map_resolution_m, c, "params.eta_s_m", "must exceed map_resolution_m");

@@ -69,14 +69,25 @@ struct RobotConfig {
 // The team radio as the simulation models it (transport.radio; common/transport/link_model.h).
 // All zero is an ideal link. Applies to the team topics between robots; the station, a
 // recorder of the experiment, hears and is heard directly.
+// A robot cut off from every teammate for a while (a partition that heals), in sim seconds
+// [from_s, to_s). Modelled where the loop's clock is sim time (lockstep).
+struct RadioOutage {
+  std::string robot;
+  double from_s = 0.0;
+  double to_s = 0.0;
+};
+
 struct RadioConfig {
   double bandwidth_bytes_per_s = 0.0;  // each robot's transmit capacity; 0 = unlimited
   double latency_s = 0.0;              // added to every message once it left the queue
   double loss = 0.0;                   // chance that one receiver misses one message, [0, 1)
   double range_m = 0.0;                // robots farther apart hear nothing of each other; 0 = unlimited
   double max_queue_age_s = 2.0;        // a message that would wait longer for the channel is dropped
+  std::vector<RadioOutage> outages;    // partitions: no link to or from the robot while one lasts
 
-  bool active() const { return bandwidth_bytes_per_s > 0.0 || latency_s > 0.0 || loss > 0.0 || range_m > 0.0; }
+  bool active() const {
+    return bandwidth_bytes_per_s > 0.0 || latency_s > 0.0 || loss > 0.0 || range_m > 0.0 || !outages.empty();
+  }
 };
 
 // Where the services listen. Every service binds one PUB socket and one ROUTER socket;

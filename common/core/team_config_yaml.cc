@@ -156,7 +156,23 @@ RobotConfig read_robot(const Reader& r, const YAML::Node& n, const std::string& 
 
 void read_radio(const Reader& r, const YAML::Node& n, RadioConfig& radio) {
   const std::string path = "transport.radio";
-  r.only_keys(n, path, {"bandwidth_bytes_per_s", "latency_s", "loss", "range_m", "max_queue_age_s"});
+  r.only_keys(n, path, {"bandwidth_bytes_per_s", "latency_s", "loss", "range_m", "max_queue_age_s", "outages"});
+  if (const auto list = n["outages"]; list.IsDefined() && !list.IsNull()) {
+    if (!list.IsSequence()) r.fail(list, path + ".outages", "must be a list of {robot, from_s, to_s}");
+    for (size_t i = 0; i < list.size(); ++i) {
+      const std::string at = path + ".outages[" + std::to_string(i) + "]";
+      if (!list[i].IsMap()) r.fail(list[i], at, "must be a map {robot, from_s, to_s}");
+      r.only_keys(list[i], at, {"robot", "from_s", "to_s"});
+      RadioOutage outage;
+      r.read(list[i], at, "robot", outage.robot);
+      r.read(list[i], at, "from_s", outage.from_s);
+      r.read(list[i], at, "to_s", outage.to_s);
+      if (outage.robot.empty()) r.fail(list[i], at + ".robot", "names the robot cut off");
+      if (!(outage.from_s >= 0.0) || !(outage.to_s > outage.from_s) || !std::isfinite(outage.to_s))
+        r.fail(list[i], at + ".to_s", "must satisfy 0 <= from_s < to_s (sim seconds)");
+      radio.outages.push_back(outage);
+    }
+  }
   r.read(n, path, "bandwidth_bytes_per_s", radio.bandwidth_bytes_per_s);
   r.read(n, path, "latency_s", radio.latency_s);
   r.read(n, path, "loss", radio.loss);

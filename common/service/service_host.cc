@@ -185,11 +185,15 @@ void ServiceHost::configure_radio() {
     if (entry->context->kind() == core::ServiceKind::kSim) simulated.insert(entry->context->robot_id());
   const bool whole_team = simulated.size() == team_.robots.size();
   wire_.radio->enable_range(whole_team);
+  wire_.radio->enable_outages(options_.lockstep);
   const auto& radio = team_.transport.radio;
   core::LogLine(core::LogLevel::kInfo, "service")
       << "radio model: " << (radio.bandwidth_bytes_per_s > 0 ? std::to_string(radio.bandwidth_bytes_per_s) + " B/s" : "unlimited")
       << " per robot, latency " << radio.latency_s << " s, loss " << radio.loss << ", range "
       << (radio.range_m > 0 ? std::to_string(radio.range_m) + " m" : "unlimited");
+  if (!radio.outages.empty() && !options_.lockstep)
+    core::log(core::LogLevel::kWarn, "service",
+              "transport.radio.outages are not modelled here: they are in sim seconds, which only lockstep's clock is");
   if (radio.range_m > 0 && !whole_team)
     core::log(core::LogLevel::kWarn, "service",
               "transport.radio.range_m is not modelled here: this process does not simulate every robot");

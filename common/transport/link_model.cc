@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <tuple>
 
 namespace hexplore::transport {
@@ -47,7 +48,19 @@ std::optional<Eigen::Vector3d> PositionBoard::before(uint32_t slot, int64_t time
 }
 
 RadioMedium::RadioMedium(core::RadioConfig config, std::shared_ptr<const Roster> roster, uint64_t seed, bool lockstep)
-    : config_(config), roster_(std::move(roster)), seed_(seed), lockstep_(lockstep) {}
+    : config_(config), roster_(std::move(roster)), seed_(seed), lockstep_(lockstep) {
+  for (const auto& o : config_.outages) {
+    const auto slot = roster_->slot(o.robot);
+    if (!slot) throw std::invalid_argument("radio: outage of '" + o.robot + "', who is not on the roster");
+    outages_.push_back({*slot, static_cast<int64_t>(std::llround(o.from_s * 1e9)),
+                        static_cast<int64_t>(std::llround(o.to_s * 1e9))});
+  }
+}
+
+bool RadioMedium::cut_off(uint32_t slot, int64_t now_ns) const {
+  return std::any_of(outages_.begin(), outages_.end(),
+                     [&](const Outage& o) { return o.slot == slot && now_ns >= o.from_ns && now_ns < o.to_ns; });
+}
 
 void RadioMedium::submit(Submission submission) {
   std::lock_guard lock(mutex_);
@@ -98,6 +111,9 @@ RadioVerdict RadioMedium::receive(uint32_t sender_slot, uint32_t receiver_slot, 
     const double u = static_cast<double>(h >> 11) * 0x1.0p-53;  // uniform in [0, 1)
     if (u < config_.loss) return RadioVerdict::kLost;
   }
+  // A partition is a robot out of everyone's range for a while: counted the same way.
+  if (outages_enabled_ && (cut_off(sender_slot, now_ns) || cut_off(receiver_slot, now_ns)))
+    return RadioVerdict::kOutOfRange;
   if (range_enabled_) {
     const auto a = positions_.before(sender_slot, now_ns);
     const auto b = positions_.before(receiver_slot, now_ns);

@@ -12,7 +12,8 @@
 //   receivers    loss: each (message, receiving robot) is lost with probability `loss`, drawn
 //                from a hash of both so that every service of the receiver agrees; range: the
 //                two robots' true positions (PositionBoard, written by the sims) must be within
-//                range_m when the message is handled.
+//                range_m when the message is handled; outages: neither robot may be cut off
+//                (a partition) at that moment.
 //
 // Only team topics between robots go through it: robot-local topics stay on the robot, and the
 // station, the experiment's recorder, hears and is heard directly. Request/reply between
@@ -83,6 +84,9 @@ class RadioMedium {
   // process that simulates the whole team has (ServiceHost decides).
   void enable_range(bool enabled) { range_enabled_ = enabled && config_.range_m > 0.0; }
   bool range_enabled() const { return range_enabled_; }
+  // Whether the outages (partitions, in sim seconds) are modelled: they need a clock that is sim
+  // time at every receiver, which lockstep has (ServiceHost decides).
+  void enable_outages(bool enabled) { outages_enabled_ = enabled && !outages_.empty(); }
   PositionBoard& positions() { return positions_; }
 
   void submit(Submission submission);
@@ -102,6 +106,13 @@ class RadioMedium {
   uint64_t seed_;
   bool lockstep_;
   bool range_enabled_ = false;
+  bool outages_enabled_ = false;
+  struct Outage {
+    uint32_t slot;
+    int64_t from_ns, to_ns;
+  };
+  std::vector<Outage> outages_;  // config_.outages by roster slot
+  bool cut_off(uint32_t slot, int64_t now_ns) const;
   PositionBoard positions_;
   std::mutex mutex_;
   std::vector<Submission> pending_;     // lockstep: this step's submissions

@@ -269,6 +269,29 @@ TEST(TeamConfig, RadioModelIsReadAndChecked) {
   }
 }
 
+TEST(TeamConfig, RadioOutagesAreReadAndChecked) {
+  const std::string base = "species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}, {id: b, species: SLUGCAT}]\n";
+  const auto c = parse_team_config(base + "transport:\n  radio:\n    outages:\n      - {robot: b, from_s: 60, to_s: 120}\n", "t");
+  ASSERT_EQ(c.transport.radio.outages.size(), 1u);
+  EXPECT_EQ(c.transport.radio.outages[0].robot, "b");
+  EXPECT_DOUBLE_EQ(c.transport.radio.outages[0].from_s, 60.0);
+  EXPECT_DOUBLE_EQ(c.transport.radio.outages[0].to_s, 120.0);
+  EXPECT_TRUE(c.transport.radio.active());
+  const std::pair<const char*, const char*> bad[] = {
+      {"      - {robot: c, from_s: 60, to_s: 120}", "transport.radio.outages[0].robot"},  // not in the team
+      {"      - {robot: b, from_s: 60, to_s: 60}", "transport.radio.outages[0].to_s"},
+      {"      - {robot: b, from_s: 60, to_s: 120, when: now}", "transport.radio.outages[0].when"},
+      {"      - b", "transport.radio.outages[0]"}};
+  for (const auto& [text, key] : bad) {
+    try {
+      parse_team_config(base + "transport:\n  radio:\n    outages:\n" + text + "\n", "t.yaml");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const ConfigError& e) {
+      EXPECT_EQ(e.key(), key) << text;
+    }
+  }
+}
+
 TEST(TeamConfig, LivenessTimeoutsAreReadAndChecked) {
   const std::string base = "species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}]\n";
   const LivenessParams defaults = parse_team_config(base, "t").params.liveness;

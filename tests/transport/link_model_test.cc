@@ -136,6 +136,22 @@ TEST(LinkModel, BeyondTheRangeThereIsNoLink) {
   EXPECT_EQ(m.receive(1, 2, "team/pose", 3, 101), RadioVerdict::kDelivered);
 }
 
+TEST(LinkModel, APartitionCutsARobotOffBothWaysForItsWindowOnly) {
+  core::RadioConfig c;
+  c.outages.push_back({"r2", 10.0, 20.0});
+  RadioMedium m(c, roster(), 1, true);
+  EXPECT_EQ(m.receive(1, 2, "team/map", 1, 15'000'000'000), RadioVerdict::kDelivered);  // not modelled yet
+  m.enable_outages(true);
+  EXPECT_EQ(m.receive(1, 2, "team/map", 1, 9'999'999'999), RadioVerdict::kDelivered);
+  EXPECT_EQ(m.receive(1, 2, "team/map", 2, 10'000'000'000), RadioVerdict::kOutOfRange);
+  EXPECT_EQ(m.receive(2, 3, "team/map", 2, 15'000'000'000), RadioVerdict::kOutOfRange);  // nor heard
+  EXPECT_EQ(m.receive(1, 3, "team/map", 2, 15'000'000'000), RadioVerdict::kDelivered);   // the others talk on
+  EXPECT_EQ(m.receive(1, 2, "team/map", 3, 20'000'000'000), RadioVerdict::kDelivered);   // healed
+  core::RadioConfig stranger;
+  stranger.outages.push_back({"r9", 1.0, 2.0});
+  EXPECT_THROW(RadioMedium(stranger, roster(), 1, true), std::invalid_argument);
+}
+
 TEST(LinkModel, SocketsApplyItToTeamTopicsBetweenRobotsOnly) {
   Context ctx;
   auto medium = std::make_shared<RadioMedium>(radio(0.0, 0.05, 0.5, 0.0), roster(), 3, false);
