@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <string>
 #include <thread>
 #include <vector>
@@ -49,9 +48,7 @@ struct Args {
 // null without --curve.
 std::shared_ptr<const transport::CurveCredentials> bench_curve(const Args& args, const std::string& member) {
   if (args.curve_dir.empty()) return nullptr;
-  for (const char* m : {"source", "sink"})
-    if (!std::filesystem::exists(std::filesystem::path(args.curve_dir) / (std::string(m) + ".secret")))
-      transport::write_curve_key_pair(args.curve_dir, m, transport::generate_curve_key_pair());
+  transport::write_missing_curve_key_pairs(args.curve_dir, {"source", "sink"});
   const auto ring = transport::CurveKeyring::load(args.curve_dir, {"source", "sink"});
   return std::make_shared<transport::CurveCredentials>(transport::CurveCredentials{member, ring->own_pair(member), ring});
 }

@@ -1,6 +1,5 @@
 #include "common/service/team_keys.h"
 
-#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
@@ -41,16 +40,8 @@ std::shared_ptr<const transport::CurveCredentials> member_credentials(
 }
 
 int make_missing_team_keys(const core::TeamConfig& team, bool replace) {
-  const std::filesystem::path dir(team.transport.curve_keys_dir);
-  if (dir.empty()) return 0;
-  int made = 0;
-  for (const auto& m : key_members(team)) {
-    if (!replace && std::filesystem::exists(dir / (m + ".secret")) && std::filesystem::exists(dir / (m + ".public")))
-      continue;
-    transport::write_curve_key_pair(dir.string(), m, transport::generate_curve_key_pair());
-    ++made;
-  }
-  return made;
+  if (team.transport.curve_keys_dir.empty()) return 0;
+  return transport::write_missing_curve_key_pairs(team.transport.curve_keys_dir, key_members(team), replace);
 }
 
 }  // namespace hexplore::service

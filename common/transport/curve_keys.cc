@@ -68,6 +68,17 @@ void write_curve_key_pair(const std::string& dir, const std::string& member, con
   write_file(file_of(dir, member, ".public"), pair.public_key, 0644);
 }
 
+int write_missing_curve_key_pairs(const std::string& dir, const std::vector<std::string>& members, bool replace) {
+  int made = 0;
+  for (const auto& m : members) {
+    if (!replace && std::filesystem::exists(file_of(dir, m, ".secret")) && std::filesystem::exists(file_of(dir, m, ".public")))
+      continue;
+    write_curve_key_pair(dir, m, generate_curve_key_pair());
+    ++made;
+  }
+  return made;
+}
+
 std::shared_ptr<const CurveKeyring> CurveKeyring::load(const std::string& dir, const std::vector<std::string>& members) {
   auto ring = std::make_shared<CurveKeyring>();
   ring->dir_ = dir;

@@ -35,6 +35,10 @@ bool is_z85_key(const std::string& z85);
 // gets mode 0600). Throws std::runtime_error naming the file that could not be written.
 void write_curve_key_pair(const std::string& dir, const std::string& member, const CurveKeyPair& pair);
 
+// Writes a fresh pair for every member of `members` that has no complete pair in `dir` yet (for
+// every one with `replace`); returns how many it wrote. Throws like write_curve_key_pair.
+int write_missing_curve_key_pairs(const std::string& dir, const std::vector<std::string>& members, bool replace = false);
+
 // The public keys of every member of a team, and the folder they came from.
 class CurveKeyring {
  public:
