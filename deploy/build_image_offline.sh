@@ -14,9 +14,11 @@
 #   --export FILE    also write the image as a docker-archive (docker load -i FILE)
 # env: HEXPLORE_MIRROR (default: the first Debian URI of /etc/apt/sources*), HEXPLORE_JOBS
 #      (compile jobs, default nproc), HEXPLORE_IMAGE (default localhost/hexplore/services:latest),
-#      HEXPLORE_WORK (scratch folder, default /tmp/hexplore-image).
+#      HEXPLORE_WORK (scratch folder, default /tmp/hexplore-image), STORAGE_DRIVER (containers
+#      storage, default vfs, which works everywhere; overlay where the kernel allows it, as
+#      deploy/run_rig_podman.sh wants: vfs copies the whole image for each of its 22 containers).
 set -euo pipefail
-export STORAGE_DRIVER=vfs
+export STORAGE_DRIVER=${STORAGE_DRIVER:-vfs}
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=${HEXPLORE_WORK:-/tmp/hexplore-image}
