@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <string>
@@ -117,9 +118,13 @@ TEST_F(RigConfigTest, ComposeRunsEveryServiceUnderTheHostItsPeersConnectTo) {
     }
     EXPECT_EQ(env["HEXPLORE_METRICS_PORT"].as<int>(0), metrics_port(team_, robot, kind))
         << "the healthcheck would probe another port than the exposer binds";
-    bool mounts_teams = false;
-    for (const auto& v : s["volumes"]) mounts_teams |= v.as<std::string>().rfind("./deploy/teams:/etc/hexplore/teams", 0) == 0;
+    bool mounts_teams = false, mounts_keys = false;
+    for (const auto& v : s["volumes"]) {
+      mounts_teams |= v.as<std::string>().rfind("./deploy/teams:/etc/hexplore/teams", 0) == 0;
+      mounts_keys |= v.as<std::string>() == "team-keys:/etc/hexplore/teams/keys:ro";
+    }
     EXPECT_TRUE(mounts_teams) << "deploy/teams is not mounted at /etc/hexplore/teams";
+    EXPECT_TRUE(mounts_keys) << "the team-keys volume is not mounted read-only at /etc/hexplore/teams/keys";
     const auto health = s["healthcheck"];
     ASSERT_TRUE(health.IsMap()) << "no healthcheck";
     for (const char* key : {"test", "interval", "timeout", "retries"}) EXPECT_TRUE(health[key]) << "healthcheck." << key;
@@ -162,6 +167,14 @@ TEST_F(RigConfigTest, AuthenticatedTeamsMakeTheirKeysBeforeAnyServiceStarts) {
   std::string command;
   for (const auto& word : keys["entrypoint"]) command += word.as<std::string>() + " ";
   EXPECT_NE(command.find("hexplore_keys --config /etc/hexplore/teams/multi-building.yaml"), std::string::npos) << command;
+  // It writes into the team-keys volume, not into the host's tree: the services' user (uid 10001)
+  // cannot write a checkout's folder, and a read-only bind mount needs its nested mount point in
+  // the tree (deploy/teams/keys, kept by its README).
+  bool writes_volume = false;
+  for (const auto& v : keys["volumes"]) writes_volume |= v.as<std::string>() == "team-keys:/etc/hexplore/teams/keys";
+  EXPECT_TRUE(writes_volume) << "the keys service does not write the team-keys volume";
+  EXPECT_TRUE(std::filesystem::is_directory(kSource + "/deploy/teams/keys"))
+      << "deploy/teams/keys (the volume's mount point) is missing from the tree";
   // Every chain starts after it: each robot's sim (its other services wait for their sim) and the station.
   for (const auto& robot : team_.robots)
     EXPECT_TRUE(services[robot.id + "-sim"]["depends_on"]["keys"]) << robot.id << "-sim does not wait for the keys";
