@@ -89,7 +89,16 @@ std::string robot_communication_json(const ExperimentRecord& r, const std::strin
     j << (first ? "" : ", ") << "\"" << name << "\": " << number(it->second.counter(key));
     first = false;
   }
-  j << "}, \"radio_drops\": {";
+  // Each teammate's increments this robot had not applied at the end (null: never heard).
+  j << ", \"increments_behind\": {";
+  first = true;
+  for (const auto& [source, _] : r.robots) {
+    if (source == robot) continue;
+    const double behind = r.increments_behind(robot, source);
+    j << (first ? "" : ", ") << "\"" << source << "\": " << (behind < 0 ? "null" : number(behind));
+    first = false;
+  }
+  j << "}}, \"radio_drops\": {";
   first = true;
   for (const auto& [name, value] : radio_counters()) {
     j << (first ? "" : ", ") << "\"" << name << "\": " << number(it->second.counter_sum(value));

@@ -25,6 +25,14 @@ double ExperimentRecord::accumulated_completeness() const {
   return sum;
 }
 
+double ExperimentRecord::increments_behind(const std::string& robot, const std::string& source) const {
+  const auto r = robots.find(robot), s = robots.find(source);
+  if (r == robots.end() || s == robots.end() || s->second.own_increment_seq < 0) return -1.0;
+  const auto synced = r->second.synced_seq.find(source);
+  if (synced == r->second.synced_seq.end()) return -1.0;
+  return std::max(0.0, s->second.own_increment_seq - synced->second);
+}
+
 double ExperimentRecord::final_team_completeness() const {
   return completeness.empty() ? 0.0 : completeness.back().team;
 }

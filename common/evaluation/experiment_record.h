@@ -32,6 +32,10 @@ struct RobotTrack {
   // Status counters since the start, "service.value" (evaluation::status_counters()); radio
   // drops per reporting service ("hlmap.radio_lost", ...).
   std::map<std::string, double> counters;
+  // Map convergence, from the latest hlmap status: the sequence number of this robot's own
+  // latest increment, and how far it has applied each teammate's (-1 / absent: not heard).
+  double own_increment_seq = -1.0;
+  std::map<std::string, double> synced_seq;
 
   // Sum of the counters named `value` over every service ("radio_lost").
   double counter_sum(const std::string& value) const;
@@ -93,6 +97,10 @@ struct ExperimentRecord {
 
   // Sum over robots of their final completeness (paper: lower = less overlap... at equal team completeness).
   double accumulated_completeness() const;
+  // Increments of `source` that `robot` had not applied by the latest statuses of both (0 when
+  // converged; the statuses are taken at slightly different times, so 1 may be in flight).
+  // -1 when either was never heard.
+  double increments_behind(const std::string& robot, const std::string& source) const;
   double final_team_completeness() const;
 };
 

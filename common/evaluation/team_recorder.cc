@@ -124,6 +124,7 @@ void TeamRecorder::on_status(const std::string& robot, std::string_view service,
            std::find(known.begin(), known.end(), "*." + value) != known.end();
   };
   for (const auto& v : status.values()) {
+    if (service == "hlmap" && record_map_sync(track->second, v.name(), v.value())) continue;
     const std::string key = std::string(service) + "." + v.name();
     if (!kept(key, v.name())) continue;
     Counter& c = counters_[robot][key];
@@ -136,6 +137,18 @@ void TeamRecorder::on_status(const std::string& robot, std::string_view service,
   if (auto odometry = counters.find("sim.odometry_m"); odometry != counters.end()) track->second.length_m = odometry->second;
   if (auto collisions = counters_[robot].find("sim.collisions"); collisions != counters_[robot].end())
     track->second.collisions = static_cast<uint32_t>(collisions->second.latest);
+}
+
+bool TeamRecorder::record_map_sync(RobotTrack& track, const std::string& name, double value) {
+  static const std::string kSynced = "synced_seq.";
+  if (name == "own_increment_seq") {
+    track.own_increment_seq = value;
+    return true;
+  }
+  if (name.rfind(kSynced, 0) != 0) return false;
+  const std::string source = name.substr(kSynced.size());
+  if (record_.robots.contains(source)) track.synced_seq[source] = value;  // an unknown robot is not recorded
+  return true;
 }
 
 int TeamRecorder::on_planning_status(const std::string& robot, const v1::ServiceStatus& status) {

@@ -43,7 +43,8 @@ class TeamRecorder {
   void on_team_message(const std::string& robot, std::string_view topic, size_t bytes);
   // A planning status; records the planning time of each new round. Returns views remaining (-1 unknown).
   int on_planning_status(const std::string& robot, const v1::ServiceStatus& status);
-  // Any service's status: keeps the status counters (status_counters()) of `service`.
+  // Any service's status: keeps the status counters (status_counters()) of `service`, and of
+  // hlmap's the map-convergence values (RobotTrack::own_increment_seq, synced_seq).
   void on_status(const std::string& robot, std::string_view service, const v1::ServiceStatus& status);
   void on_completeness(CompletenessSample sample);
 
@@ -51,6 +52,9 @@ class TeamRecorder {
   const ExperimentRecord& record() const { return record_; }
 
  private:
+  // Keeps an hlmap status value that says how far the maps converged; false for any other.
+  bool record_map_sync(RobotTrack& track, const std::string& name, double value);
+
   const core::TeamConfig* team_;
   ExperimentRecord record_;
   std::optional<double> start_s_;

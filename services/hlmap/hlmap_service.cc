@@ -93,6 +93,7 @@ void HlmapService::setup(service::ServiceContext& context) {
   context.connect(robot_id_, core::ServiceKind::kMapping);
   for (const auto& robot : team.robots) {
     if (robot.id == robot_id_) continue;
+    peers_.push_back(robot.id);
     context.connect(robot.id, core::ServiceKind::kHlmap);
     sync_->want_snapshot(robot.id);  // a (re)started hlmap fetches what it missed
   }
@@ -276,6 +277,9 @@ void HlmapService::fill_status(v1::ServiceStatus& status) {
   add("own_supervoxels", static_cast<double>(segmenter_->supervoxels().size()));
   add("fused_version", static_cast<double>(fused_version_));
   add("own_increment_seq", static_cast<double>(log_->seq()));
+  // How far this robot has applied each teammate's increments: against the teammate's own
+  // own_increment_seq it says whether the maps converged (after a partition, a restart).
+  for (const auto& peer : peers_) add("synced_seq." + peer, static_cast<double>(sync_->applied_seq(peer)));
   add("gaps_detected", static_cast<double>(sync_->stats().gaps_detected));
   add("gaps_repaired", static_cast<double>(sync_->stats().gaps_repaired));
   add("repair_requests", static_cast<double>(sync_->stats().repair_requests));

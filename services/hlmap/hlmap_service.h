@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "common/highlevel/contribution_log.h"
 #include "common/highlevel/map_fusion.h"
@@ -41,6 +42,7 @@ class HlmapService : public service::Service {
 
   service::ServiceContext* context_ = nullptr;
   std::string robot_id_;
+  std::vector<std::string> peers_;  // the teammates whose contributions this robot fuses
   highlevel::SegmenterParams params_;
   std::vector<int> levels_;
   std::unique_ptr<highlevel::SupervoxelSegmenter> segmenter_;

@@ -46,6 +46,10 @@ ExperimentRecord sample_record(uint64_t seed, double time_s, double final_comple
   r.robots["b"].counters = {{"hlmap.full_map_bytes", 204800.0}, {"mapping.raw_map_bytes", 2048000.0},
                             {"hlmap.gaps_detected", 3}, {"hlmap.gaps_repaired", 2},
                             {"hlmap.radio_out_of_range", 40}, {"sim.radio_out_of_range", 5}};
+  // b applied a's increments up to 7 of 9; a never reported how far it applied b's.
+  r.robots["a"].own_increment_seq = 9;
+  r.robots["b"].own_increment_seq = 4;
+  r.robots["b"].synced_seq = {{"a", 7}};
   r.planning_times_s["a"] = {0.05, 0.07};
   r.final_map_points_m = {{0, 0, 0}, {5, 5, 3}, {9, 1, 1}};
   // An earlier periodic report of "a" (left out of the summary's counts), then the final ones.
@@ -92,6 +96,8 @@ TEST(ResultsWriter, WritesEveryFile) {
   EXPECT_NE(strategies.find("full_perception,3000,30\n"), std::string::npos) << strategies;
   EXPECT_NE(summary.find("\"saving_vs_full_high_level\": 0.9833333333"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"map_sync\": {\"gaps_detected\": 3, \"gaps_repaired\": 2"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"increments_behind\": {\"a\": 2}}"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"increments_behind\": {\"b\": null}}"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"radio_drops\": {\"expired\": 0, \"lost\": 0, \"out_of_range\": 45}"), std::string::npos)
       << summary;
   // TUM: "time x y z qx qy qz qw", one line per sample (no orientation recorded: identity).

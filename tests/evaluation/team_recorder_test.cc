@@ -123,6 +123,26 @@ TEST(TeamRecorder, StatusCountersCountFromTheStart) {
   EXPECT_FALSE(track.counters.contains("hlmap.supervoxels"));  // not a counter the record keeps
 }
 
+TEST(TeamRecorder, MapConvergenceIsTheLatestSequencesHeard) {
+  const auto t = team();
+  TeamRecorder r(t);
+  const auto& record = r.record();
+  EXPECT_EQ(record.increments_behind("a", "b"), -1.0);  // nothing heard yet
+  r.on_status("a", "hlmap", status({{"own_increment_seq", 40}, {"synced_seq.b", 12}, {"synced_seq.ghost", 3}}));
+  r.on_status("b", "hlmap", status({{"own_increment_seq", 30}, {"synced_seq.a", 40}}));
+  EXPECT_EQ(record.increments_behind("a", "b"), 18.0);  // b is at 30, a applied 12 of them
+  EXPECT_EQ(record.increments_behind("b", "a"), 0.0);
+  EXPECT_FALSE(record.robots.at("a").synced_seq.contains("ghost"));  // not a robot of the team
+  // A partition heals: a catches up with b, whose sequence went on.
+  r.on_status("b", "hlmap", status({{"own_increment_seq", 55}, {"synced_seq.a", 41}}));
+  r.on_status("a", "hlmap", status({{"own_increment_seq", 42}, {"synced_seq.b", 54}}));
+  EXPECT_EQ(record.increments_behind("a", "b"), 1.0);  // one in flight
+  EXPECT_EQ(record.increments_behind("b", "a"), 1.0);
+  EXPECT_EQ(record.increments_behind("a", "nobody"), -1.0);
+  // Not kept as counters.
+  EXPECT_FALSE(record.robots.at("a").counters.contains("hlmap.own_increment_seq"));
+}
+
 TEST(TeamRecorder, LongestBlockedStretchPerRobot) {
   // Blocked 2 s, moving, blocked 5 s (to the end): 5 s; a robot never blocked: 0.
   const auto t = team();
