@@ -105,7 +105,7 @@ TEST_F(RigConfigTest, ComposeRunsEveryServiceUnderTheHostItsPeersConnectTo) {
     ASSERT_TRUE(s.IsMap()) << "missing";
     // Peers connect to the PUB and ROUTER of this service through this host name.
     const std::string host = host_of(connect_endpoint(team_, robot, kind, SocketRole::kPublish));
-    std::set<std::string> names = {name, s["hostname"].as<std::string>("")};
+    std::set<std::string> names = {name, s["hostname"].as<std::string>(""), s["container_name"].as<std::string>("")};
     if (const auto team_net = s["networks"]; team_net.IsMap() && team_net["team"]["aliases"])
       for (const auto& alias : team_net["team"]["aliases"]) names.insert(alias.as<std::string>());
     EXPECT_TRUE(names.count(host)) << "no container name, hostname or alias '" << host << "'";
