@@ -16,18 +16,18 @@ int robot_slot(const TeamConfig& config, const std::string& robot_id) {
   return *index;
 }
 
+std::string socket_name(const std::string& robot_id, ServiceKind service, SocketRole role) {
+  return robot_id + "-" + std::string(service_name(service)) + (role == SocketRole::kPublish ? "-pub" : "-req");
+}
+
+}  // namespace
+
 std::string substitute(std::string text, std::string_view name, const std::string& value) {
   const std::string token = "{" + std::string(name) + "}";
   for (size_t at = text.find(token); at != std::string::npos; at = text.find(token, at + value.size()))
     text.replace(at, token.size(), value);
   return text;
 }
-
-std::string socket_name(const std::string& robot_id, ServiceKind service, SocketRole role) {
-  return robot_id + "-" + std::string(service_name(service)) + (role == SocketRole::kPublish ? "-pub" : "-req");
-}
-
-}  // namespace
 
 std::string_view service_name(ServiceKind kind) { return kNames[static_cast<size_t>(kind)]; }
 

@@ -27,6 +27,11 @@ int endpoint_port(const TeamConfig& config, const std::string& robot_id, Service
 std::string bind_endpoint(const TeamConfig& config, const std::string& robot_id, ServiceKind service, SocketRole role);
 // Address to connect to the same socket from another process or container.
 std::string connect_endpoint(const TeamConfig& config, const std::string& robot_id, ServiceKind service, SocketRole role);
+// `text` with every "{name}" replaced by `value`: the team file's host_template
+// ("{robot}-{service}") and per-robot paths in options every process receives alike
+// (mapping's --map-file maps/{robot}.map).
+std::string substitute(std::string text, std::string_view name, const std::string& value);
+
 // Prometheus exposer port of a service; 0 when metrics are off.
 int metrics_port(const TeamConfig& config, const std::string& robot_id, ServiceKind service);
 

@@ -45,7 +45,7 @@ const std::vector<OptionInfo>& builtin_options() {
       {"give-up-views", "planning", "distinct spots a target stays open from before it is given up (1)"},
       {"judge-lag-s", "planning", "coverage is judged this long after an observation: map lag (2 s)"},
       {"keep-stretch-m", "planning", "a new round keeps the old route's views this near the leg (5 m)"},
-      {"map-file", "mapping", "load the map at start, save it on shutdown and periodically"},
+      {"map-file", "mapping", "load the map at start, save it on shutdown and periodically ({robot}: the robot id)"},
       {"max-pose-jump-m", "mapping", "a larger sensor jump between scans is refused (5 m)"},
       {"min-aim-s", "planning", "shortest look at anything (0.5 s)"},
       {"min-replan-s", "planning", "least time between planning rounds (1 s)"},

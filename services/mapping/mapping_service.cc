@@ -7,6 +7,7 @@
 
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
+#include "common/core/endpoints.h"
 #include "common/core/log.h"
 #include "common/perception/voxel_proto.h"
 #include "common/radio/pose_schedule.h"
@@ -45,6 +46,7 @@ void MappingService::setup(service::ServiceContext& context) {
   context_ = &context;
   robot_id_ = context.robot_id();
   options_ = MappingOptions::from_arguments(context.arguments());
+  options_.map_file = core::substitute(options_.map_file, "robot", robot_id_);
   body_filter_ = core::Liveness(options_.teammate_timeout_s.value_or(context.team().params.liveness.body_filter_s));
   perception::MapParams params;
   try {
@@ -128,7 +130,9 @@ void MappingService::setup(service::ServiceContext& context) {
 
 void MappingService::on_shutdown(service::ServiceContext&) {
   publish_changes();
-  save_map();
+  if (save_map())
+    core::LogLine(core::LogLevel::kInfo, "mapping")
+        << robot_id_ << ": saved " << map_->voxel_count() << " voxels to " << options_.map_file;
 }
 
 void MappingService::fill_status(v1::ServiceStatus& status) {
@@ -275,13 +279,15 @@ void MappingService::publish_full_snapshot() {
   publish_delta(perception::to_voxel_delta(map_->voxels(), map_->resolution(), true));
 }
 
-void MappingService::save_map() {
-  if (!map_ || options_.map_file.empty()) return;
+bool MappingService::save_map() {
+  if (!map_ || options_.map_file.empty()) return false;
   try {
     map_->save(options_.map_file);
+    return true;
   } catch (const perception::MapFileError& e) {
     saves_failed_->increment();
     core::LogLine(core::LogLevel::kError, "mapping") << robot_id_ << ": " << e.what();
+    return false;
   }
 }
 

@@ -26,7 +26,8 @@ namespace hexplore::mapping_service {
 struct MappingOptions {
   double publish_period_s = 0.5;        // --publish-period-s: voxel delta period
   double full_snapshot_period_s = 30.0; // --full-snapshot-period-s: full delta for late joiners (0: only at start)
-  std::string map_file;                 // --map-file: load at start, save on shutdown and periodically
+  std::string map_file;                 // --map-file: load at start, save on shutdown and periodically;
+                                        // "{robot}" becomes the robot id (one option for a whole team)
   double save_period_s = 60.0;          // --save-period-s (0: only on shutdown)
   double max_pose_jump_m = 5.0;         // --max-pose-jump-m: sensor origin jump between scans
   int reanchor_after = 10;              // --reanchor-after: consistent jumped scans accepted as a relocation
@@ -61,7 +62,7 @@ class MappingService : public service::Service {
   void publish_changes();
   void publish_full_snapshot();
   void publish_delta(const v1::VoxelDelta& delta);
-  void save_map();
+  bool save_map();  // false when there is no map file or the save failed (counted, logged)
 
   service::ServiceContext* context_ = nullptr;
   std::string robot_id_;

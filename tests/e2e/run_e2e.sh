@@ -5,6 +5,9 @@
 #   run_e2e.sh CASE LAUNCHER STATION WORKDIR BASE_PORT [EXPERIMENT]
 # CASE: explore (plain run), switch (planner switched to no-mnss mid-run via the station's
 # --send), kill (every service of mr1000a killed mid-run; slugcat1 must finish the work),
+# restart (mr1000a's mapping service, then its hlmap, stopped mid-run and started again by hand
+# with the same options: the mapping must resume every voxel from its map file, its completeness
+# must not drop, and the team must still end the mission with every map increment applied),
 # lockstep (the one-process fast mode through the launcher, then the same seed again through
 # hexplore_experiment with two CPU hogs beside it: the trajectories, completeness and
 # communication records must be byte-identical, and the experiment writes its summary),
@@ -83,11 +86,30 @@ fi
 
 mode=()
 [ "$case" = lockstep ] && mode=(--compose)
-"$launch" "${mode[@]}" --config "$work/team.yaml" --log-dir "$work/logs" \
-  --child-args "--results $work/results --log-level debug --real-time-factor ${E2E_RTF:-3}" > "$work/launch.log" 2>&1 &
+child_args="--results $work/results --log-level debug --real-time-factor ${E2E_RTF:-3}"
+# Every mapping service keeps its map in a file of its own (saved every 5 s and on SIGTERM).
+[ "$case" = restart ] && child_args+=" --map-file $work/maps/{robot}.map --save-period-s 5" && mkdir -p "$work/maps"
+"$launch" "${mode[@]}" --config "$work/team.yaml" --log-dir "$work/logs" --child-args "$child_args" > "$work/launch.log" 2>&1 &
 launcher=$!
-cleanup() { kill "$launcher" 2>/dev/null || true; }
+restarted=
+cleanup() { kill "$launcher" $restarted 2>/dev/null || true; }
 trap cleanup EXIT
+
+# restart_service SERVICE: stops mr1000a's SERVICE (SIGTERM, as a supervisor would) and starts
+# the same executable again with the options the launcher gave it; its output goes to
+# logs/mr1000a-SERVICE-restarted.log.
+restart_service() {
+  local service=$1 line pid exe
+  line=$(grep -m 1 "^\[launch\] started mr1000a/$service (pid" "$work/launch.log") || fail "no mr1000a/$service in the launch log"
+  pid=$(sed 's/.*(pid \([0-9]*\)).*/\1/' <<< "$line")
+  exe=$(sed 's/.*): //' <<< "$line")
+  kill -TERM "$pid"
+  for _ in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.2; done
+  kill -0 "$pid" 2>/dev/null && fail "mr1000a's $service did not stop on SIGTERM"
+  # shellcheck disable=SC2086
+  "$exe" --config "$work/team.yaml" --robot mr1000a $child_args > "$work/logs/mr1000a-$service-restarted.log" 2>&1 &
+  restarted+=" $!"
+}
 
 # Sim time of the station's latest progress line (0 before the first one).
 sim_time() { { grep -o 't= *[0-9.]*s' "$work/launch.log" || true; } | tail -n 1 | tr -dc '0-9.' ; }
@@ -115,10 +137,26 @@ case $case in
     for pid in $pids; do kill -KILL "$pid" 2>/dev/null || true; done
     echo "killed mr1000a's services: $pids"
     ;;
+  restart)
+    wait_sim_time 25
+    restart_service mapping
+    stopped_at=$(sim_time)
+    saved=$(sed -n 's/.*mr1000a: saved \([0-9]*\) voxels to .*/\1/p' "$work/logs/mr1000a-mapping.log" | tail -n 1)
+    [ -n "$saved" ] && [ "$saved" -gt 0 ] || fail "mr1000a's mapping service saved no map when stopped"
+    echo "stopped mr1000a's mapping service at t=${stopped_at}s with $saved voxels saved, and restarted it"
+    # The hlmap next: it starts empty and must rebuild from its mapping and its teammate.
+    wait_sim_time 45
+    restart_service hlmap
+    echo "stopped mr1000a's hlmap at t=$(sim_time)s, and restarted it"
+    ;;
   *) fail "unknown case" ;;
 esac
 
 wait "$launcher" || true
+for pid in $restarted; do
+  kill -TERM "$pid" 2>/dev/null || true
+  wait "$pid" || true
+done
 trap - EXIT
 cat "$work/results/summary.json"
 check_summary "$work/results/summary.json" "$case" "$min_observable"
@@ -132,6 +170,34 @@ case $case in
   kill)
     # The survivor planned for itself alone after the loss, and went on to cover more.
     grep -q "1 live" "$work/logs/slugcat1-planning.log" || fail "slugcat1 never planned without mr1000a"
+    ;;
+  restart)
+    resumed=$(sed -n 's/.*mr1000a: resumed \([0-9]*\) voxels from .*/\1/p' "$work/logs/mr1000a-mapping-restarted.log")
+    [ "$resumed" = "$saved" ] || fail "the restarted mapping service resumed '$resumed' voxels, $saved were saved"
+    echo "the restarted mapping service resumed all $resumed voxels"
+    python3 - "$work/results" "$stopped_at" <<'PY' || fail "see above"
+import csv, json, sys
+results, stopped_at = sys.argv[1], float(sys.argv[2])
+ok = True
+def check(condition, message):
+    global ok
+    print(("ok   " if condition else "FAIL ") + message)
+    ok &= condition
+# mr1000a's own map as the station samples it: nothing lost over the restart, and growing after.
+rows = [(float(r["sim_time_s"]), float(r["mr1000a"])) for r in csv.DictReader(open(results + "/completeness.csv"))]
+before = [c for t, c in rows if t <= stopped_at]
+after = [c for t, c in rows if t > stopped_at]
+check(bool(before) and bool(after), f"{len(before)} completeness samples before the stop, {len(after)} after")
+if before and after:
+    check(min(after) >= before[-1] - 0.005,
+          f"mr1000a's completeness {100 * before[-1]:.1f} % at the stop, at least {100 * min(after):.1f} % after")
+    check(after[-1] > before[-1], f"and {100 * after[-1]:.1f} % at the end: the restarted service kept mapping")
+# The hlmaps caught up: every robot applied every teammate's increments.
+for robot, r in json.load(open(results + "/summary.json"))["robots"].items():
+    for source, behind in r["map_sync"]["increments_behind"].items():
+        check(behind is not None and behind <= 1, f"{robot} applied {source}'s increments: {behind} behind at the end")
+sys.exit(0 if ok else 1)
+PY
     ;;
   lockstep)
     hogs=()

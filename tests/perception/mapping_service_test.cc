@@ -207,5 +207,19 @@ TEST_F(MappingServiceTest, SavesOnShutdownAndResumesFromTheMapFile) {
   std::filesystem::remove(path);
 }
 
+// One --map-file for a whole team (a launcher passes the same options to every process):
+// "{robot}" names each robot's own file.
+TEST_F(MappingServiceTest, MapFileNamesTheRobot) {
+  stop();
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string robot_file = (dir / "hexplore_mapping_service_test_r1.map").string();
+  std::filesystem::remove(robot_file);
+  start({{"map-file", (dir / "hexplore_mapping_service_test_{robot}.map").string()}});
+  stop();
+  EXPECT_TRUE(std::filesystem::exists(robot_file));
+  EXPECT_FALSE(std::filesystem::exists(dir / "hexplore_mapping_service_test_{robot}.map"));
+  std::filesystem::remove(robot_file);
+}
+
 }  // namespace
 }  // namespace hexplore::mapping
