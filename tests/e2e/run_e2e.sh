@@ -8,6 +8,8 @@
 # restart (mr1000a's mapping service, then its hlmap, stopped mid-run and started again by hand
 # with the same options: the mapping must resume every voxel from its map file, its completeness
 # must not drop, and the team must still end the mission with every map increment applied),
+# loss (lockstep through the launcher, every receiver missing 30 % of the team's messages on
+# every topic, E2E_LOSS: the mission must still end, and the map gaps must be repaired),
 # lockstep (the one-process fast mode through the launcher, then the same seed again through
 # hexplore_experiment with two CPU hogs beside it: the trajectories, completeness and
 # communication records must be byte-identical, and the experiment writes its summary),
@@ -45,6 +47,7 @@ transport:
   base_port: $port
   # Authenticated links, as the deploy/teams files: the launcher makes the keys in $work/keys.
   curve_keys_dir: keys
+$([ "$case" = loss ] && printf '  radio:\n    loss: %s\n' "${E2E_LOSS:-0.3}")
 params:
   seed: 1
   # As in deploy/teams: the simulated LiDARs fire at 2 Hz, a fifth of the paper's point rate.
@@ -85,7 +88,7 @@ if [ "$case" = baselines ]; then
 fi
 
 mode=()
-[ "$case" = lockstep ] && mode=(--compose)
+[ "$case" = lockstep ] || [ "$case" = loss ] && mode=(--compose)
 child_args="--results $work/results --log-level debug --real-time-factor ${E2E_RTF:-3}"
 # Every mapping service keeps its map in a file of its own (saved every 5 s and on SIGTERM).
 [ "$case" = restart ] && child_args+=" --map-file $work/maps/{robot}.map --save-period-s 5" && mkdir -p "$work/maps"
@@ -125,7 +128,7 @@ wait_sim_time() {
 }
 
 case $case in
-  explore | lockstep) ;;
+  explore | lockstep | loss) ;;
   switch)
     wait_sim_time 20
     "$station" --config "$work/team.yaml" --send planner=no-mnss || fail "could not send the planner switch"
@@ -196,6 +199,30 @@ if before and after:
 for robot, r in json.load(open(results + "/summary.json"))["robots"].items():
     for source, behind in r["map_sync"]["increments_behind"].items():
         check(behind is not None and behind <= 1, f"{robot} applied {source}'s increments: {behind} behind at the end")
+sys.exit(0 if ok else 1)
+PY
+    ;;
+  loss)
+    python3 - "$work/results/summary.json" <<'PY' || fail "see above"
+import json, sys
+ok = True
+def check(condition, message):
+    global ok
+    print(("ok   " if condition else "FAIL ") + message)
+    ok &= condition
+robots = json.load(open(sys.argv[1]))["robots"]
+for robot, r in robots.items():
+    sync = r["map_sync"]
+    check(r["radio_drops"]["lost"] > 0, f"{robot} lost {r['radio_drops']['lost']:.0f} messages to the radio")
+    # A gap shows only when a later increment arrives, so the last ones of the mission may still
+    # be missing at its end, and the two sequences compared come from statuses that are lost
+    # too: a few behind, where nothing repaired would leave about 30 % of what the source sent.
+    check(sync["gaps_detected"] > 0 and sync["gaps_repaired"] >= sync["gaps_detected"] - 2,
+          f"{robot}: {sync['gaps_detected']:.0f} sequence gaps detected, {sync['gaps_repaired']:.0f} repaired")
+    for source, behind in sync["increments_behind"].items():
+        sent = robots[source]["communication_messages"]["incremental_map"]
+        check(behind is not None and behind <= 0.05 * sent,
+              f"{robot} applied {source}'s increments: {behind} of {sent:.0f} behind at the end (at most 5 %)")
 sys.exit(0 if ok else 1)
 PY
     ;;
