@@ -55,7 +55,7 @@ const std::vector<OptionInfo>& builtin_options() {
       {"open-targets-period-s", "station", "how often planners are asked why targets are open (0: at the end)"},
       {"peer-stuck-s", "planning", "a teammate standing still this long is stuck (30 s)"},
       {"peer-timeout-s", "planning", "a teammate silent this long is gone (team file's liveness)"},
-      {"progress-period-s", "station", "progress line on stdout (5 s)"},
+      {"progress-period-s", "station", "progress line on stdout (5 s; 0: none)"},
       {"publish-period-s", "mapping", "voxel delta period (0.5 s)"},
       {"reach-m", "planning", "a view is reached this near its spot (1 m)"},
       {"real-time-factor", "sim", "sim seconds per wall second (1)"},

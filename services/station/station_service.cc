@@ -208,10 +208,7 @@ void StationService::tick() {
     last_open_targets_s_ = t;
     request_open_targets();
   }
-  if (t - last_progress_s_ >= options_.progress_period_s) {
-    last_progress_s_ = t;
-    print_progress();
-  }
+  update_progress();
   if (const auto reason = monitor_->check(t)) finish(*reason);
 }
 
@@ -270,14 +267,30 @@ void StationService::request_open_targets() {
   }
 }
 
-void StationService::print_progress() {
+StationProgress StationService::progress() const {
+  const std::lock_guard<std::mutex> lock(progress_mutex_);
+  return progress_;
+}
+
+void StationService::update_progress() {
+  const double t = recorder_->mission_time_s();
   const auto& samples = recorder_->record().completeness;
-  const double completeness = samples.empty() ? 0.0 : samples.back().team;
+  StationProgress now;
+  now.started = true;
+  now.mission_time_s = t;
+  now.team_completeness = samples.empty() ? 0.0 : samples.back().team;
+  now.live_robots = monitor_->live_robots(t);
+  {
+    const std::lock_guard<std::mutex> lock(progress_mutex_);
+    progress_ = now;
+  }
+  if (options_.progress_period_s <= 0.0 || t - last_progress_s_ < options_.progress_period_s) return;
+  last_progress_s_ = t;
   std::string states;
   for (const auto& [id, track] : recorder_->record().robots)
     states += " " + id + "=" + (track.last_state.empty() ? "?" : track.last_state.substr(13));
-  std::printf("[station] t=%6.1fs completeness=%5.1f%% live=%d%s\n", recorder_->mission_time_s(),
-              100.0 * completeness, monitor_->live_robots(recorder_->mission_time_s()), states.c_str());
+  std::printf("[station] t=%6.1fs completeness=%5.1f%% live=%d%s\n", t, 100.0 * now.team_completeness,
+              now.live_robots, states.c_str());
   std::fflush(stdout);
 }
 

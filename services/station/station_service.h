@@ -7,6 +7,7 @@
 
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <string>
@@ -17,6 +18,7 @@
 #include "common/evaluation/mission_monitor.h"
 #include "common/evaluation/report_script.h"
 #include "common/evaluation/team_recorder.h"
+#include "services/station/station_progress.h"
 #include "hexplore/v1/mission.pb.h"
 
 namespace hexplore::station_service {
@@ -28,7 +30,7 @@ struct StationOptions {
   bool autostart = true;            // send StartMission once every robot is heard
   bool observable = true;           // compute the observable-completeness mask
   double settle_s = 5.0;            // see evaluation::MissionMonitorOptions
-  double progress_period_s = 5.0;   // progress line on stdout
+  double progress_period_s = 5.0;   // progress line on stdout (0: none)
   // How often each planner is asked why its targets are open (open_targets.csv); 0: only
   // at the end of the mission.
   double open_targets_period_s = 0.0;
@@ -68,6 +70,9 @@ class StationService : public service::Service {
   // The finished mission's record (nullptr before the mission is over). Read it only after the
   // station's loop has ended (ServiceHost::wait), e.g. to summarise several runs.
   const evaluation::ExperimentRecord* result() const { return record_complete_ ? &recorder_->record() : nullptr; }
+  // The latest progress; safe to read from another thread while the station's loop runs (a
+  // host drawing a live progress line).
+  StationProgress progress() const;
 
  private:
   void subscribe_team(service::ServiceContext& context);
@@ -76,7 +81,7 @@ class StationService : public service::Service {
   // Asks every robot's planning why its coverage targets are still open (end of mission).
   void request_open_targets();
   void publish_mission(const v1::MissionCommand& command);
-  void print_progress();
+  void update_progress();  // progress_ from the recorder, and the progress line when due
   void finish(const std::string& reason);
 
   service::ServiceContext* context_ = nullptr;
@@ -97,6 +102,8 @@ class StationService : public service::Service {
   bool record_complete_ = false;  // the record is complete
   std::string end_reason_;
   int64_t start_wall_ns_ = 0;
+  mutable std::mutex progress_mutex_;
+  StationProgress progress_;  // guarded by progress_mutex_
 };
 
 }  // namespace hexplore::station_service

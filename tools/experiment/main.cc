@@ -35,6 +35,7 @@
 #include "services/station/station_service.h"
 #include "tools/team/team_services.h"
 #include "tools/experiment/experiment_args.h"
+#include "tools/experiment/progress_line.h"
 
 namespace hexplore::experiment {
 namespace {
@@ -42,8 +43,10 @@ namespace {
 enum class Outcome { kFinished, kFailed, kInterrupted };
 
 // Runs one mission to its end; the station's record lands in `record` when it finished.
+// `label` ("run 1/5 seed 3") names it on the progress line, drawn when stdout is a terminal.
 Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const std::string& results_dir,
-                const sigset_t& stop_signals, std::optional<evaluation::ExperimentRecord>& record) {
+                const std::string& label, const sigset_t& stop_signals,
+                std::optional<evaluation::ExperimentRecord>& record) {
   service::HostOptions options;
   options.compose = true;
   options.lockstep = true;
@@ -51,6 +54,10 @@ Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const 
   options.arguments = args.service_arguments;
   options.arguments["results"] = results_dir;
   options.arguments["report"] = "false";  // the figures of every seed are drawn together at the end
+  // On a terminal the progress line replaces the station's lines; in a log (CI, a comparison's
+  // child) the station says where the mission is once a minute of sim time, not every 5 s.
+  const bool terminal = is_terminal(stdout);
+  options.arguments.try_emplace("progress-period-s", terminal ? "0" : "60");
   // Each mission's planning traces in a folder of their own (DIR/seed-<n>), not on top of
   // the previous seed's.
   if (auto it = options.arguments.find("trace-dir"); it != options.arguments.end())
@@ -68,13 +75,17 @@ Outcome run_one(const core::TeamConfig& team, const ExperimentArgs& args, const 
 
   bool interrupted = false;
   const timespec tick{0, 100'000'000};
+  std::optional<ProgressLine> progress;
+  if (terminal) progress.emplace(stdout, label, team.time_limit_s);
   while (!host.any_finished()) {
     const int signal = sigtimedwait(&stop_signals, nullptr, &tick);
     if (signal == SIGINT || signal == SIGTERM) {
       interrupted = true;
       break;
     }
+    if (progress) progress->update(station->progress());
   }
+  progress.reset();  // ends the line before anything else is printed
   host.stop();
   host.wait();
   if (interrupted) return Outcome::kInterrupted;
@@ -107,10 +118,12 @@ int run_seeds(const core::TeamConfig& base, const ExperimentArgs& args, const st
     std::printf("[experiment] run %zu/%zu: seed %llu -> %s\n", i + 1, args.seeds.size(),
                 static_cast<unsigned long long>(team.params.seed), dir.c_str());
     std::fflush(stdout);
+    const std::string label = "run " + std::to_string(i + 1) + "/" + std::to_string(args.seeds.size()) + " seed " +
+                              std::to_string(team.params.seed);
     std::optional<evaluation::ExperimentRecord> record;
     Outcome outcome;
     try {
-      outcome = run_one(team, args, dir, stop_signals, record);
+      outcome = run_one(team, args, dir, label, stop_signals, record);
     } catch (const core::ConfigError& e) {
       std::cerr << "error: " << e.what() << "\n";
       return 2;
