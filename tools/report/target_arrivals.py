@@ -9,17 +9,38 @@ has_view, given_up, no_viewpoint, occluded, unreachable, unassignable). For each
 
 - from_<state>: it was open in the previous report without a view (occluded, unreachable, ...);
 - reopened: absent from the previous report (complete then) but open in some earlier one;
-- new: never reported before (a surface first seen, or first incomplete).
+- new: never reported before (a surface first seen, or first incomplete);
+- new_where_given_up: new, but within --near-m of a target of the same class and facing that
+  an earlier report had as given up and that has since gone from the reports. Supervoxel keys
+  are the smallest seed key of a group of merged seeds (highlevel/segmenter.cc, regroup), so a
+  group that gains or loses a seed can come back under another key, and the team's give-up
+  ledger, kept by key, no longer knows it. An upper bound: the old target may also have been
+  completed, and the new one be its neighbour.
 
 Prints one line per report (views open, arrivals by origin), then the totals with the median of
 open voxels (voxels - covered_voxels) and how many are facade targets. Standard library only.
 
-Usage: target_arrivals.py OPEN_TARGETS.csv --robot ID [--since SECONDS]
+Usage: target_arrivals.py OPEN_TARGETS.csv --robot ID [--since SECONDS] [--near-m 1.0]
 """
 
 import argparse
 import collections
 import csv
+import math
+
+CLASS_SHIFT = 60  # supervoxel keys: facing in bits 60-62, facade bit 63 (highlevel/supervoxel.h)
+
+
+def position(row):
+    return (float(row["x_m"]), float(row["y_m"]), float(row["z_m"]))
+
+
+def near_a_gone_give_up(key, row, gone_given_up, near_m):
+    """Whether a target given up earlier, now gone from the reports, of the same class and
+    facing as `key`, lay within near_m of it."""
+    here = position(row)
+    return any(k >> CLASS_SHIFT == key >> CLASS_SHIFT and math.dist(here, p) <= near_m
+               for k, p in gone_given_up.items())
 
 
 def main():
@@ -27,6 +48,8 @@ def main():
     ap.add_argument("open_targets")
     ap.add_argument("--robot", required=True, help="whose reports to read (every robot reports the fused map)")
     ap.add_argument("--since", type=float, default=0.0, help="first report time counted (s)")
+    ap.add_argument("--near-m", type=float, default=1.0,
+                    help="how near a new target must lie to a gone given-up one to count as it (m)")
     args = ap.parse_args()
 
     reports = collections.OrderedDict()
@@ -39,11 +62,13 @@ def main():
                          "(run with --open-targets-period-s)")
 
     seen = set()
+    given_up = {}  # key -> position, of every target some report had as given up
     previous = None
     totals = collections.Counter()
     open_voxels = collections.defaultdict(list)
     facade = collections.Counter()
     for t, current in reports.items():
+        gone_given_up = {k: p for k, p in given_up.items() if k not in current}
         if previous is not None and t > args.since:
             counts = collections.Counter()
             for key, row in current.items():
@@ -55,6 +80,8 @@ def main():
                     origin = "from_" + previous[key]["state"]
                 elif key in seen:
                     origin = "reopened"
+                elif near_a_gone_give_up(key, row, gone_given_up, args.near_m):
+                    origin = "new_where_given_up"
                 else:
                     origin = "new"
                 counts[origin] += 1
@@ -65,6 +92,7 @@ def main():
             detail = ", ".join(f"{k} {v}" for k, v in sorted(counts.items()))
             print(f"{t:8.0f} s  views {views:5d}  arrivals {sum(counts.values()):4d}  {detail}")
         seen |= set(current)
+        given_up.update({k: position(r) for k, r in current.items() if r["state"] == "given_up"})
         previous = current
 
     print(f"\narrivals after {args.since:.0f} s: {sum(totals.values())}")
