@@ -28,7 +28,8 @@ const std::vector<std::pair<std::string, std::string>>& sync_counters() {
   static const std::vector<std::pair<std::string, std::string>> k = {{"gaps_detected", "hlmap.gaps_detected"},
                                                                      {"gaps_repaired", "hlmap.gaps_repaired"},
                                                                      {"repair_requests", "hlmap.repair_requests"},
-                                                                     {"snapshots_applied", "hlmap.snapshots_applied"}};
+                                                                     {"snapshots_applied", "hlmap.snapshots_applied"},
+                                                                     {"peer_restarts", "hlmap.peer_restarts"}};
   return k;
 }
 const std::vector<std::pair<std::string, std::string>>& radio_counters() {

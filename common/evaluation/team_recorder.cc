@@ -21,7 +21,8 @@ std::optional<double> status_value(const v1::ServiceStatus& status, std::string_
 const std::vector<std::string>& status_counters() {
   static const std::vector<std::string> kCounters = {
       "sim.odometry_m",          "sim.collisions",          "hlmap.gaps_detected",   "hlmap.gaps_repaired",
-      "hlmap.repair_requests",   "hlmap.snapshots_applied", "hlmap.full_map_bytes",  "mapping.raw_map_bytes",
+      "hlmap.repair_requests",   "hlmap.snapshots_applied", "hlmap.peer_restarts",   "hlmap.full_map_bytes",
+      "mapping.raw_map_bytes",
       "*.radio_expired",         "*.radio_lost",            "*.radio_out_of_range"};
   return kCounters;
 }

@@ -36,6 +36,7 @@ SourcedUpdate ContributionLog::take_increment() {
   SourcedUpdate inc;
   inc.source = source_;
   inc.seq = ++seq_;
+  inc.incarnation = incarnation_;
   for (uint64_t key : pending_keys_) {
     auto now = current_.supervoxels.find(key);
     auto pub = published_.supervoxels.find(key);
@@ -69,6 +70,7 @@ SourcedUpdate ContributionLog::snapshot() const {
   SourcedUpdate snap;
   snap.source = source_;
   snap.seq = seq_;
+  snap.incarnation = incarnation_;
   snap.update = published_.snapshot();
   return snap;
 }

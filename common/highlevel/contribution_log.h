@@ -17,11 +17,14 @@
 namespace hexplore::highlevel {
 
 // A sequenced change of one source's contribution (increment or, if update.full_snapshot,
-// the whole contribution up to `seq`).
+// the whole contribution up to `seq`). Sequence numbers restart at 1 when the source's hlmap
+// restarts; `incarnation` (its start time, larger after every restart) says which numbering
+// a seq belongs to.
 struct SourcedUpdate {
   std::string source;
   uint64_t seq = 0;
   MapUpdate update;
+  uint64_t incarnation = 0;
 };
 
 // A published supervoxel is re-sent when a discrete attribute (coverage, traversal
@@ -36,8 +39,9 @@ struct PublishTolerance {
 
 class ContributionLog {
  public:
-  explicit ContributionLog(std::string source, PublishTolerance tolerance = {})
-      : source_(std::move(source)), tolerance_(tolerance) {}
+  // `incarnation` marks every increment and snapshot of this log (see SourcedUpdate).
+  explicit ContributionLog(std::string source, uint64_t incarnation = 0, PublishTolerance tolerance = {})
+      : source_(std::move(source)), incarnation_(incarnation), tolerance_(tolerance) {}
 
   // Records one segmentation result (nothing is published until take_increment).
   void record(const SupervoxelSegmenter& segmenter, const SegmentationChange& change);
@@ -49,6 +53,7 @@ class ContributionLog {
   SourcedUpdate snapshot() const;
 
   const std::string& source() const { return source_; }
+  uint64_t incarnation() const { return incarnation_; }
   uint64_t seq() const { return seq_; }
   // What peers hold of this robot (edge lengths on the wire come from these centres).
   const Contribution& contribution() const { return published_; }
@@ -58,6 +63,7 @@ class ContributionLog {
   bool significant(const Supervoxel& published, const Supervoxel& now) const;
 
   std::string source_;
+  uint64_t incarnation_;
   PublishTolerance tolerance_;
   uint64_t seq_ = 0;
   Contribution current_;    // the segmenter's state

@@ -136,6 +136,7 @@ v1::MapIncrement to_increment(const SourcedUpdate& inc, const Contribution& curr
   v1::MapIncrement m;
   m.set_source_robot(inc.source);
   m.set_increment_seq(inc.seq);
+  m.set_incarnation(inc.incarnation);
   fill_message(inc.update, current, &m);
   return m;
 }
@@ -144,6 +145,7 @@ v1::MapSnapshot to_snapshot(const SourcedUpdate& snap, const Contribution& curre
   v1::MapSnapshot m;
   m.set_source_robot(snap.source);
   m.set_upto_seq(snap.seq);
+  m.set_incarnation(snap.incarnation);
   fill_message(snap.update, current, &m);
   return m;
 }
@@ -152,6 +154,7 @@ SourcedUpdate from_proto(const v1::MapIncrement& inc) {
   SourcedUpdate u;
   u.source = inc.source_robot();
   u.seq = inc.increment_seq();
+  u.incarnation = inc.incarnation();
   fill_update(inc, &u.update);
   return u;
 }
@@ -160,6 +163,7 @@ SourcedUpdate from_proto(const v1::MapSnapshot& snap) {
   SourcedUpdate u;
   u.source = snap.source_robot();
   u.seq = snap.upto_seq();
+  u.incarnation = snap.incarnation();
   u.update.full_snapshot = true;
   fill_update(snap, &u.update);
   return u;

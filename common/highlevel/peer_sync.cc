@@ -27,19 +27,32 @@ void PeerSync::drain(Peer& peer, std::vector<SourcedUpdate>& out) {
   }
 }
 
+bool PeerSync::adopt_incarnation(Peer& peer, const SourcedUpdate& update, std::vector<SourcedUpdate>& out) {
+  if (update.incarnation < peer.incarnation) {
+    ++stats_.stale;
+    return false;
+  }
+  if (update.incarnation == peer.incarnation) return true;
+  if (peer.applied > 0 || !peer.pending.empty()) {
+    // The source restarted: what it sent before is void, and its new numbering is met as on
+    // first contact (increment 1 applies; any later one is a gap that fetches a snapshot).
+    ++stats_.restarts;
+    SourcedUpdate reset;
+    reset.source = update.source;
+    reset.incarnation = update.incarnation;
+    reset.update.full_snapshot = true;
+    out.push_back(std::move(reset));
+    peer = Peer{};
+  }
+  peer.incarnation = update.incarnation;
+  return true;
+}
+
 std::vector<SourcedUpdate> PeerSync::on_increment(SourcedUpdate inc) {
   std::vector<SourcedUpdate> out;
   if (inc.source == self_ || inc.seq == 0) return out;
   Peer& p = peers_[inc.source];
-  if (inc.seq == 1 && p.applied > 1) {
-    // The source restarted its numbering: its old contribution is void.
-    ++stats_.restarts;
-    p = Peer{};
-    SourcedUpdate reset;
-    reset.source = inc.source;
-    reset.update.full_snapshot = true;
-    out.push_back(std::move(reset));
-  }
+  if (!adopt_incarnation(p, inc, out)) return out;
   if (inc.seq <= p.applied) {
     ++stats_.duplicates;
     return out;
@@ -69,6 +82,7 @@ std::vector<SourcedUpdate> PeerSync::on_snapshot(SourcedUpdate snap) {
   std::vector<SourcedUpdate> out;
   if (snap.source == self_) return out;
   Peer& p = peers_[snap.source];
+  if (!adopt_incarnation(p, snap, out)) return out;
   if (snap.seq < p.applied) return out;  // older than what is applied
   snap.update.full_snapshot = true;
   p.applied = snap.seq;
@@ -95,6 +109,11 @@ std::vector<RepairRequest> PeerSync::due_requests(double now_s) {
     ++stats_.repair_requests;
   }
   return out;
+}
+
+uint64_t PeerSync::incarnation(const std::string& source) const {
+  auto it = peers_.find(source);
+  return it == peers_.end() ? 0 : it->second.incarnation;
 }
 
 uint64_t PeerSync::applied_seq(const std::string& source) const {

@@ -2,7 +2,9 @@
 // Reliable delivery of peers' increments over a lossy publish/subscribe channel (ZeroMQ
 // guide, Clone pattern): per-source sequence numbers, gap detection, buffering of early
 // increments, and the decision of which repair requests (MapRepairRequest) to send when.
-// It holds no sockets: the service feeds it messages and sends what it asks for.
+// A source's restart shows as a newer incarnation: its old contribution is void and its new
+// one is fetched whole unless its increment 1 arrived. It holds no sockets: the service feeds
+// it messages and sends what it asks for.
 
 #include <cstdint>
 #include <limits>
@@ -27,6 +29,7 @@ struct PeerSyncStats {
   uint64_t snapshots_applied = 0;
   uint64_t repair_requests = 0;
   uint64_t restarts = 0;
+  uint64_t stale = 0;  // from an incarnation older than the source's latest
 };
 
 class PeerSync {
@@ -38,7 +41,8 @@ class PeerSync {
   // Asks for `source`'s whole contribution at the next due_requests (late join, restart).
   void want_snapshot(const std::string& source);
   // A received increment; returns what may be applied now, in order (the increment itself
-  // and any buffered successors), or nothing when it is a duplicate or follows a gap.
+  // and any buffered successors), or nothing when it is a duplicate or follows a gap. From a
+  // newer incarnation, an empty full snapshot (the old contribution is void) comes first.
   std::vector<SourcedUpdate> on_increment(SourcedUpdate increment);
   // A received snapshot (update.full_snapshot, seq = upto_seq); returns it followed by the
   // buffered increments it makes applicable; nothing when it is older than what is applied.
@@ -47,17 +51,22 @@ class PeerSync {
   std::vector<RepairRequest> due_requests(double now_s);
 
   uint64_t applied_seq(const std::string& source) const;
+  uint64_t incarnation(const std::string& source) const;  // of what is applied (0: unknown)
   bool in_sync(const std::string& source) const;  // known, no gap, no snapshot wanted
   const PeerSyncStats& stats() const { return stats_; }
 
  private:
   struct Peer {
+    uint64_t incarnation = 0;
     uint64_t applied = 0;
     std::map<uint64_t, SourcedUpdate> pending;  // received after a gap
     bool need_repair = false;
     double requested_at = -std::numeric_limits<double>::infinity();
   };
   void drain(Peer& peer, std::vector<SourcedUpdate>& out);
+  // False for an update of an older incarnation than `peer`'s; for a newer one, starts the
+  // peer afresh (an empty full snapshot appended to `out` voids what was applied before).
+  bool adopt_incarnation(Peer& peer, const SourcedUpdate& update, std::vector<SourcedUpdate>& out);
 
   std::string self_;
   double timeout_s_;

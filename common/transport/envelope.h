@@ -4,7 +4,7 @@
 // handlers see it decoded into a hexplore.v1.Header. Building and checking it lives here so
 // that every socket applies the same rules.
 //
-// Compact header (schema version 2), every field needed and nothing repeated that the team
+// Compact header (since schema version 2), every field needed and nothing repeated that the team
 // file already says:
 //   byte 0     bits 7..5: schema version; bits 4..0: flags
 //                0x01 named     the sender follows as strings (robot id, species, service),

@@ -44,7 +44,11 @@ void HlmapService::setup(service::ServiceContext& context) {
     throw core::ConfigError(team.source_file, "params", std::string("hlmap: ") + e.what());
   }
   segmenter_ = std::make_unique<highlevel::SupervoxelSegmenter>(params_, levels_);
-  log_ = std::make_unique<highlevel::ContributionLog>(robot_id_);
+  // The start time marks this run's increments: peers tell them from a previous run's (a
+  // restart numbers from 1 again) even when they miss increment 1.
+  const auto started_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+      std::chrono::system_clock::now().time_since_epoch());
+  log_ = std::make_unique<highlevel::ContributionLog>(robot_id_, static_cast<uint64_t>(started_ms.count()));
   fusion_ = std::make_unique<highlevel::MapFusion>(levels_);
   repair_timeout_s_ = std::max(0.5, 2.0 * team.params.eta_c_s);
   sync_ = std::make_unique<highlevel::PeerSync>(robot_id_, repair_timeout_s_);
@@ -80,6 +84,8 @@ void HlmapService::setup(service::ServiceContext& context) {
   metrics_.gaps_detected = counter("hexplore_hlmap_gaps_detected_total", "Gaps in peers' increment sequences");
   metrics_.gaps_repaired = counter("hexplore_hlmap_gaps_repaired_total", "Gaps closed by a repair snapshot");
   metrics_.repair_requests = counter("hexplore_hlmap_repair_requests_total", "MapRepairRequests sent to peers");
+  metrics_.peer_restarts = counter("hexplore_hlmap_peer_restarts_total", "Peers' hlmaps seen restarted (contribution replaced)");
+  metrics_.stale_updates = counter("hexplore_hlmap_stale_updates_total", "Peers' updates from before their hlmap restarted, dropped");
   metrics_.snapshots_served = counter("hexplore_hlmap_snapshots_served_total", "MapSnapshots served to peers");
   metrics_.bad_deltas = counter("hexplore_hlmap_bad_voxel_deltas_total", "Voxel deltas dropped (wrong resolution)");
   metrics_.malformed_voxels = counter("hexplore_hlmap_malformed_voxels_total",
@@ -158,6 +164,8 @@ void HlmapService::apply_ready(std::vector<highlevel::SourcedUpdate> ready) {
   metrics_.gaps_detected->increment(static_cast<double>(stats.gaps_detected - reported_.gaps_detected));
   metrics_.gaps_repaired->increment(static_cast<double>(stats.gaps_repaired - reported_.gaps_repaired));
   metrics_.repair_requests->increment(static_cast<double>(stats.repair_requests - reported_.repair_requests));
+  metrics_.peer_restarts->increment(static_cast<double>(stats.restarts - reported_.restarts));
+  metrics_.stale_updates->increment(static_cast<double>(stats.stale - reported_.stale));
   reported_ = stats;
 }
 
@@ -190,7 +198,8 @@ v1::MapSnapshot HlmapService::serve_repair(const v1::MapRepairRequest& request) 
   } else if (const auto* c = fusion_->contribution(request.source_robot());
              c != nullptr && sync_->in_sync(request.source_robot())) {
     // Relay a teammate's contribution we hold completely (helps when the source is out of reach).
-    highlevel::SourcedUpdate relay{request.source_robot(), sync_->applied_seq(request.source_robot()), c->snapshot()};
+    highlevel::SourcedUpdate relay{request.source_robot(), sync_->applied_seq(request.source_robot()), c->snapshot(),
+                                   sync_->incarnation(request.source_robot())};
     reply = highlevel::to_snapshot(relay, *c);
   }
   metrics_.snapshots_served->increment();
@@ -201,7 +210,9 @@ v1::MapSnapshot HlmapService::serve_repair(const v1::MapRepairRequest& request) 
 v1::FusedMapUpdate HlmapService::serve_fused(const v1::FusedMapRequest&) {
   highlevel::MapUpdate all = fusion_->map().snapshot();
   all.version = fused_version_;
-  return highlevel::to_fused_update(all, fusion_->map());
+  v1::FusedMapUpdate reply = highlevel::to_fused_update(all, fusion_->map());
+  reply.set_incarnation(log_->incarnation());
+  return reply;
 }
 
 void HlmapService::window() {
@@ -236,7 +247,8 @@ void HlmapService::window() {
   size_t hlmap_bytes = 0;
   if (!changes.empty()) {
     changes.version = ++fused_version_;
-    const v1::FusedMapUpdate update = highlevel::to_fused_update(changes, fusion_->map());
+    v1::FusedMapUpdate update = highlevel::to_fused_update(changes, fusion_->map());
+    update.set_incarnation(log_->incarnation());
     context_->publisher().publish(topics::hlmap(robot_id_), update);
     hlmap_bytes = update.ByteSizeLong();
   }
@@ -284,6 +296,7 @@ void HlmapService::fill_status(v1::ServiceStatus& status) {
   add("gaps_repaired", static_cast<double>(sync_->stats().gaps_repaired));
   add("repair_requests", static_cast<double>(sync_->stats().repair_requests));
   add("snapshots_applied", static_cast<double>(sync_->stats().snapshots_applied));
+  add("peer_restarts", static_cast<double>(sync_->stats().restarts));
   add("full_map_bytes", full_map_bytes_);
 }
 

@@ -73,6 +73,8 @@ class HlmapService : public service::Service {
     metrics::Counter* gaps_detected = nullptr;
     metrics::Counter* gaps_repaired = nullptr;
     metrics::Counter* repair_requests = nullptr;
+    metrics::Counter* peer_restarts = nullptr;
+    metrics::Counter* stale_updates = nullptr;
     metrics::Counter* snapshots_served = nullptr;
     metrics::Counter* bad_deltas = nullptr;
     metrics::Counter* malformed_voxels = nullptr;

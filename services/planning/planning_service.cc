@@ -217,14 +217,10 @@ void PlanningService::request_snapshot() {
 }
 
 void PlanningService::on_map(const v1::FusedMapUpdate& update) {
-  if (!update.full_snapshot()) {
-    // An increment only applies on top of the version right before it; otherwise resync.
-    if (!have_map_ || update.version() != map_version_ + 1) {
-      if (!have_map_ || update.version() > map_version_) request_snapshot();
-      return;
-    }
-  } else if (have_map_ && update.version() < map_version_) {
-    return;  // an older snapshot than what we have
+  switch (map_order_.on_update(update.incarnation(), update.version(), update.full_snapshot())) {
+    case FusedMapOrder::Action::kApply: break;
+    case FusedMapOrder::Action::kDrop: return;
+    case FusedMapOrder::Action::kRequestSnapshot: request_snapshot(); return;
   }
   const highlevel::MapUpdate change = highlevel::from_proto(update);
   if (change.malformed > 0) {
@@ -233,8 +229,7 @@ void PlanningService::on_map(const v1::FusedMapUpdate& update) {
                    robot_id_ + ": dropping malformed supervoxels of the fused map (hexplore_planning_malformed_supervoxels_total)");
   }
   map_->apply(change);
-  map_version_ = update.version();
-  have_map_ = true;
+  map_order_.applied(update.incarnation(), update.version());
 }
 
 void PlanningService::on_mission(const v1::MissionCommand& command) {
@@ -311,8 +306,8 @@ void PlanningService::follow_route() {
 }
 
 void PlanningService::cycle() {
-  if (!have_map_) request_snapshot();  // hlmap may have started after us, or a reply was lost
-  if (!mission_.active() || !have_map_ || !active_) return;
+  if (!map_order_.have_map()) request_snapshot();  // hlmap may have started after us, or a reply was lost
+  if (!mission_.active() || !map_order_.have_map() || !active_) return;
   follow_route();
   const double age_s = since_last_plan_s();
   std::string reason;
@@ -431,7 +426,7 @@ void PlanningService::write_trace(const std::string& reason, const planning::Pla
 
 v1::OpenTargetsReport PlanningService::open_targets_report() const {
   std::vector<planning::OpenTarget> targets;
-  if (have_map_) {
+  if (map_order_.have_map()) {
     planning::PlanRequest req;
     req.map = map_.get();
     req.robots = team_states(req.self);
@@ -453,7 +448,7 @@ void PlanningService::fill_status(v1::ServiceStatus& status) {
     add("planning_time_s", last_planning_time_s_);
   }
   add("route_views_left", double(follower_ ? follower_->views_left() : 0));
-  add("map_version", double(map_version_));
+  add("map_version", double(map_order_.version()));
 }
 
 }  // namespace hexplore::planning_service

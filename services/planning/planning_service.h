@@ -38,6 +38,7 @@
 #include "hexplore/v1/mission.pb.h"
 #include "hexplore/v1/plan.pb.h"
 #include "hexplore/v1/pose.pb.h"
+#include "services/planning/fused_map_order.h"
 #include "services/planning/solution_gate.h"
 
 namespace hexplore::planning_service {
@@ -87,8 +88,7 @@ class PlanningService : public service::Service {
   std::string active_name_;
 
   std::unique_ptr<highlevel::HighLevelMap> map_;
-  uint64_t map_version_ = 0;
-  bool have_map_ = false;
+  FusedMapOrder map_order_;
   bool snapshot_pending_ = false;
   std::map<std::string, Eigen::Vector3d> positions_;  // robot id -> last known position
   std::map<std::string, planning::ReferenceSolution> shared_;  // source robot -> solution

@@ -195,10 +195,14 @@ if before and after:
     check(min(after) >= before[-1] - 0.005,
           f"mr1000a's completeness {100 * before[-1]:.1f} % at the stop, at least {100 * min(after):.1f} % after")
     check(after[-1] > before[-1], f"and {100 * after[-1]:.1f} % at the end: the restarted service kept mapping")
-# The hlmaps caught up: every robot applied every teammate's increments.
-for robot, r in json.load(open(results + "/summary.json"))["robots"].items():
+# The hlmaps caught up: every robot applied every teammate's increments, slugcat1 those of
+# mr1000a's restarted hlmap (numbered from 1 again) in place of the old ones.
+robots = json.load(open(results + "/summary.json"))["robots"]
+for robot, r in robots.items():
     for source, behind in r["map_sync"]["increments_behind"].items():
         check(behind is not None and behind <= 1, f"{robot} applied {source}'s increments: {behind} behind at the end")
+restarts = robots["slugcat1"]["map_sync"]["peer_restarts"]
+check(restarts == 1, f"slugcat1 saw mr1000a's hlmap restart {restarts:.0f} time(s) and replaced its contribution")
 sys.exit(0 if ok else 1)
 PY
     ;;

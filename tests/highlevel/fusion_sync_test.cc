@@ -167,12 +167,52 @@ TEST(PeerSync, DetectsGapsBuffersAndRepairs) {
   EXPECT_TRUE(sync.in_sync("p"));
   EXPECT_EQ(sync.stats().gaps_repaired, 1u);
   EXPECT_TRUE(sync.on_snapshot(SourcedUpdate{"p", 2, {}}).empty());  // stale
-  // A source that restarts numbering replaces its contribution.
-  const auto restarted = sync.on_increment(inc(1));
-  ASSERT_EQ(restarted.size(), 2u);
-  EXPECT_TRUE(restarted[0].update.full_snapshot);
-  EXPECT_EQ(sync.stats().restarts, 1u);
   EXPECT_TRUE(sync.on_increment(SourcedUpdate{"me", 1, {}}).empty());  // own echo
+}
+
+// A restarted source numbers from 1 again under a newer incarnation: its old contribution is
+// voided whether or not its increment 1 arrives, and nothing of the old run applies after.
+TEST(PeerSync, ARestartedSourceReplacesItsContribution) {
+  auto update = [](uint64_t incarnation, uint64_t seq, bool snapshot = false) {
+    SourcedUpdate u{"p", seq, {}, incarnation};
+    u.update.full_snapshot = snapshot;
+    return u;
+  };
+  {
+    PeerSync sync("me", 1.0);
+    for (uint64_t seq = 1; seq <= 40; ++seq) ASSERT_EQ(sync.on_increment(update(100, seq)).size(), 1u);
+    // Increment 1 of the new run arrives: the old contribution is void, then 1 applies.
+    const auto ready = sync.on_increment(update(200, 1));
+    ASSERT_EQ(ready.size(), 2u);
+    EXPECT_TRUE(ready[0].update.full_snapshot);
+    EXPECT_TRUE(ready[0].update.upserts.empty());
+    EXPECT_EQ(ready[1].seq, 1u);
+    EXPECT_EQ(sync.stats().restarts, 1u);
+    EXPECT_TRUE(sync.in_sync("p"));
+    EXPECT_EQ(sync.incarnation("p"), 200u);
+  }
+  PeerSync sync("me", 1.0);
+  for (uint64_t seq = 1; seq <= 40; ++seq) ASSERT_EQ(sync.on_increment(update(100, seq)).size(), 1u);
+  // Increment 1 was lost (a subscriber reconnects after the restart): increment 2 of the new
+  // run voids the old contribution and asks for the new one whole, although 2 <= 40.
+  const auto ready = sync.on_increment(update(200, 2));
+  ASSERT_EQ(ready.size(), 1u);
+  EXPECT_TRUE(ready[0].update.full_snapshot);
+  EXPECT_EQ(sync.applied_seq("p"), 0u);
+  const auto requests = sync.due_requests(5.0);
+  ASSERT_EQ(requests.size(), 1u);
+  EXPECT_EQ(requests[0].from_seq, 0u);
+  // Whatever of the old run is still on its way is dropped: a late increment, a relayed snapshot.
+  EXPECT_TRUE(sync.on_increment(update(100, 41)).empty());
+  EXPECT_TRUE(sync.on_snapshot(update(100, 41, true)).empty());
+  EXPECT_EQ(sync.stats().stale, 2u);
+  // The new run's snapshot, then its buffered increment 2 is superseded and 3 follows.
+  const auto repaired = sync.on_snapshot(update(200, 2, true));
+  ASSERT_EQ(repaired.size(), 1u);
+  EXPECT_EQ(repaired[0].incarnation, 200u);
+  EXPECT_EQ(sync.on_increment(update(200, 3)).size(), 1u);
+  EXPECT_TRUE(sync.in_sync("p"));
+  EXPECT_EQ(sync.stats().restarts, 1u);
 }
 
 TEST(PeerSync, LateJoinerAsksForSnapshots) {
@@ -199,11 +239,12 @@ class TeamSim {
     MapFusion fusion{kLevels};
     PeerSync sync;
     bool online = false;
-    explicit Robot(const std::string& name) : id(name), log(name), sync(name, 1.0) {}
+    std::vector<VoxelSample> sensed;  // what its mapping holds (a restarted hlmap gets it all again)
+    Robot(const std::string& name, uint64_t incarnation) : id(name), log(name, incarnation), sync(name, 1.0) {}
   };
 
   TeamSim(int robots, double drop, uint32_t seed) : drop_(drop), rng_(seed) {
-    for (int i = 0; i < robots; ++i) robots_.push_back(std::make_unique<Robot>("r" + std::to_string(i + 1)));
+    for (int i = 0; i < robots; ++i) robots_.push_back(std::make_unique<Robot>("r" + std::to_string(i + 1), 1));
   }
   Robot& robot(int i) { return *robots_[i]; }
 
@@ -217,6 +258,18 @@ class TeamSim {
     Robot& r = *robots_[i];
     const auto change = r.seg.update(voxels);
     r.log.record(r.seg, change);
+    r.sensed.insert(r.sensed.end(), voxels.begin(), voxels.end());
+  }
+  // Robot i's hlmap restarts under a new incarnation: it starts empty, its mapping hands it
+  // everything sensed so far, and (`lose_first`) no peer receives its first increment, as
+  // when subscribers reconnect to the new process only after it published.
+  void restart(int i, uint64_t incarnation, bool lose_first) {
+    auto fresh = std::make_unique<Robot>(robots_[i]->id, incarnation);
+    const std::vector<VoxelSample> sensed = std::move(robots_[i]->sensed);
+    robots_[i] = std::move(fresh);
+    join(i);
+    sense(i, sensed);
+    lose_next_from_ = lose_first ? robots_[i].get() : nullptr;
   }
   bool lost() { return std::uniform_real_distribution<double>(0, 1)(rng_) < drop_; }
 
@@ -229,8 +282,10 @@ class TeamSim {
       src->fusion.apply(src->id, inc.update);
       const std::string wire = to_increment(inc, src->log.contribution()).SerializeAsString();
       bytes_ += wire.size();
+      const bool lose = lose_next_from_ == src.get();
+      if (lose) lose_next_from_ = nullptr;
       for (auto& dst : robots_) {
-        if (dst == src || !dst->online || lost()) continue;
+        if (dst == src || !dst->online || lost() || lose) continue;
         v1::MapIncrement m;
         ASSERT_TRUE(m.ParseFromString(wire));
         for (auto& ready : dst->sync.on_increment(from_proto(m))) dst->fusion.apply(ready.source, ready.update);
@@ -279,6 +334,7 @@ class TeamSim {
   double now_ = 0.0;
   size_t bytes_ = 0;
   size_t repair_bytes_ = 0;
+  const Robot* lose_next_from_ = nullptr;
 };
 
 using testing::overlapping_streams;
@@ -345,6 +401,32 @@ TEST(TeamSync, LateJoinerReceivesTheWholeMap) {
   const auto ref = team.reference();
   EXPECT_TRUE(same_map(team.robot(2).fusion.map(), ref->map()));
   EXPECT_GT(team.robot(2).fusion.contribution("r1")->supervoxels.size(), 50u);
+}
+
+// A robot's hlmap restarts long after the mission began (its increment numbering starts at 1
+// again) and senses more: every teammate ends up with its new contribution, in a few windows,
+// also when the first increment of the new run is lost.
+TEST(TeamSync, TeammatesTakeARestartedHlmapsNewContribution) {
+  const auto streams = overlapping_streams(3, 6);
+  const auto more = overlapping_streams(3, 7);  // the same ground seen again, other noise and coverage
+  for (bool lose_first : {false, true}) {
+    TeamSim team(3, 0.0, 12);
+    run_team(team, streams, -1, 10);
+    for (int w = 0; w < 30; ++w) team.window();  // increments numbered past 40
+    ASSERT_TRUE(team.converged());
+    team.restart(0, 2, lose_first);
+    team.sense(0, more[0]);
+    int windows = 0;
+    while (!team.converged() && windows < 6) {
+      team.window();
+      ++windows;
+    }
+    ASSERT_TRUE(team.converged()) << (lose_first ? "increment 1 lost" : "increment 1 received");
+    const auto ref = team.reference();
+    for (int i = 0; i < 3; ++i) EXPECT_TRUE(same_map(team.robot(i).fusion.map(), ref->map()));
+    EXPECT_EQ(team.robot(1).sync.stats().restarts, 1u);
+    EXPECT_EQ(team.robot(1).sync.incarnation("r1"), 2u);
+  }
 }
 
 }  // namespace

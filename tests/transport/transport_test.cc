@@ -147,7 +147,7 @@ TEST(Transport, BadFramesAreCountedAndDroppedWhileValidTrafficContinues) {
   EventLoop loop;
   loop.add(sub);
 
-  auto header_frame = [](uint32_t version, const std::string& type) {
+  auto header_frame = [](const std::string& type, uint32_t version = current_schema_version()) {
     v1::Header h = make_header(kR1, 1, type, 0);
     h.set_schema_version(version);
     return transport::header_frame(h, nullptr);
@@ -162,7 +162,7 @@ TEST(Transport, BadFramesAreCountedAndDroppedWhileValidTrafficContinues) {
     return v;
   };
   auto valid_message = [&](uint64_t counter) {
-    send(frames(zmq::message_t(std::string("robot/r1/x")), header_frame(2, "hexplore.v1.TestPayload"),
+    send(frames(zmq::message_t(std::string("robot/r1/x")), header_frame("hexplore.v1.TestPayload"),
                 to_frame(payload(counter))));
   };
   for (int i = 0; i < 500 && valid.empty(); ++i) {
@@ -174,11 +174,13 @@ TEST(Transport, BadFramesAreCountedAndDroppedWhileValidTrafficContinues) {
 
   const std::string topic = "robot/r1/x";
   valid_message(1);
-  send(frames(zmq::message_t(topic), header_frame(2, "hexplore.v1.TestPayload")));  // truncated: 2 frames
+  send(frames(zmq::message_t(topic), header_frame("hexplore.v1.TestPayload")));  // truncated: 2 frames
   valid_message(2);
-  send(frames(zmq::message_t(topic), zmq::message_t(std::string("\x41\x01\x02\xff\xff garbage")),
-              to_frame(payload(9))));  // version 2, named sender whose name runs off the frame
-  send(frames(zmq::message_t(topic), header_frame(7, "hexplore.v1.TestPayload"), to_frame(payload(9))));  // version
+  std::string runs_off("\x01\x01\x02\xff\xff garbage");
+  runs_off[0] = static_cast<char>(current_schema_version() << 5 | 0x01);
+  send(frames(zmq::message_t(topic), zmq::message_t(runs_off),
+              to_frame(payload(9))));  // this version, named sender whose name runs off the frame
+  send(frames(zmq::message_t(topic), header_frame("hexplore.v1.TestPayload", 7), to_frame(payload(9))));  // version
   {
     // A v1 (protobuf) header: what an old build sends.
     v1::Header old = make_header(kR1, 1, "hexplore.v1.TestPayload", 0);
@@ -186,14 +188,14 @@ TEST(Transport, BadFramesAreCountedAndDroppedWhileValidTrafficContinues) {
     send(frames(zmq::message_t(topic), to_frame(old), to_frame(payload(9))));
   }
   valid_message(3);
-  send(frames(zmq::message_t(topic), header_frame(2, "hexplore.v1.TestPayload"),
+  send(frames(zmq::message_t(topic), header_frame("hexplore.v1.TestPayload"),
               to_frame(payload(9, 1500))));  // oversize for this subscriber
-  send(frames(zmq::message_t(topic), header_frame(2, "hexplore.v1.RobotPose"), to_frame(payload(9))));  // wrong type
-  send(frames(zmq::message_t(topic), header_frame(2, "hexplore.v1.TestPayload"),
+  send(frames(zmq::message_t(topic), header_frame("hexplore.v1.RobotPose"), to_frame(payload(9))));  // wrong type
+  send(frames(zmq::message_t(topic), header_frame("hexplore.v1.TestPayload"),
               zmq::message_t(std::string("\x0a\xff\xff\xff"))));  // payload does not parse
-  send(frames(zmq::message_t(std::string("robot/r1/bad topic")), header_frame(2, "hexplore.v1.TestPayload"),
+  send(frames(zmq::message_t(std::string("robot/r1/bad topic")), header_frame("hexplore.v1.TestPayload"),
               to_frame(payload(9))));  // invalid topic
-  send(frames(zmq::message_t(topic), header_frame(2, "hexplore.v1.TestPayload"), to_frame(payload(9)),
+  send(frames(zmq::message_t(topic), header_frame("hexplore.v1.TestPayload"), to_frame(payload(9)),
               zmq::message_t(std::string("extra"))));  // 4 frames
   valid_message(4);
   ASSERT_TRUE(loop.run_until([&] { return valid.size() == 4; }, 5s));

@@ -33,6 +33,10 @@ class Messages:
         except ImportError as e:
             raise MissingModules(f"cannot import the generated modules in {pb_dir}: {e} "
                                  "(Debian's python3-protobuf is needed)") from e
+        header = sys.modules.get("header_pb2")
+        if header is not None and header.SCHEMA_VERSION_CURRENT != wire.SCHEMA_VERSION:
+            raise MissingModules(f"the modules in {pb_dir} speak wire schema {header.SCHEMA_VERSION_CURRENT}, "
+                                 f"this client's wire.py reads {wire.SCHEMA_VERSION}: rebuild or update the client")
         self.by_name, self.by_type_id = {}, {}
         for module in modules:
             for name, descriptor in module.DESCRIPTOR.message_types_by_name.items():
