@@ -16,7 +16,7 @@
 #include "common/core/team_config.h"
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/planner_registry.h"
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 
 #include "tests/support/planning_scene.h"
 
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     // reference candidates (planners that share no route ignore them).
     auto make_map = [&](double lag) {
       auto up = synthetic_scene(SyntheticSceneOptions{});
-      Rng rng(99);
+      core::PlanRng rng(99);
       for (auto& sv : up.upserts)
         if (sv.facade() && !sv.covered && rng.uniform() < lag) sv.covered = true;
       auto m = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team));

@@ -17,7 +17,7 @@
 #include "common/planning/labels.h"
 #include "common/planning/mnss.h"
 #include "common/planning/mtsp/ga_solver.h"
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 #include "common/planning/round_inputs.h"
 #include "common/planning/route_pruning.h"
 
@@ -27,8 +27,8 @@ namespace {
 // A seed every robot derives alike from shared state (the option seed and the cluster ids),
 // so identical maps give identical GA runs whatever each robot's local round counter says.
 uint64_t shared_seed(uint64_t base, const std::vector<uint64_t>& ids) {
-  uint64_t s = mix_seed(base, ids.size());
-  for (uint64_t id : ids) s = mix_seed(s, id);
+  uint64_t s = core::mix_seed(base, ids.size());
+  for (uint64_t id : ids) s = core::mix_seed(s, id);
   return s;
 }
 
@@ -152,7 +152,7 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
   const size_t self = size_t(req.self);
   const RobotState& me = req.robots[self];
   const SpeciesCapability& my_species = team.species[size_t(me.species)];
-  Rng rng(shared_seed(mix_seed(o.seed, 0x4d4e5353), city_ids));
+  core::PlanRng rng(shared_seed(core::mix_seed(o.seed, 0x4d4e5353), city_ids));
   const ClusterViews views_of = [&](const TaskCluster& cl, const Eigen::Vector3d& start,
                                     const std::optional<Eigen::Vector3d>& end) -> std::vector<TaskView> {
     if (ablation_ == Ablation::kNoCluster) return {views[size_t(cl.views.front())]};
@@ -202,7 +202,7 @@ PlanResult HexplorePlanner::plan_voronoi(const PlanRequest& req, const TeamCapab
   out.times.assignment_s = clock.lap();
 
   out.robots.resize(R);
-  Rng rng(mix_seed(o.seed, views.size()));
+  core::PlanRng rng(core::mix_seed(o.seed, views.size()));
   for (size_t r = 0; r < R; ++r) {
     RobotPlan& plan = out.robots[r];
     plan.robot_id = req.robots[r].id;

@@ -6,7 +6,7 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 #include "common/planning/round_inputs.h"
 #include "common/planning/view_costs.h"
 #include "common/planning/vrp_instance.h"
@@ -104,7 +104,7 @@ PlanResult MdvrpPlanner::plan(const PlanRequest& req) {
   gls.max_evaluations = int64_t(std::max(0, o.ga_max_generations)) * kMdvrpEvaluationsPerGeneration;
   gls.time_budget_s = o.ga_time_budget_s;
   gls.clock = o.cpu_clock ? BudgetClock::kThreadCpu : BudgetClock::kWall;
-  gls.seed = mix_seed(mix_seed(o.seed, stable_hash(req.robots[size_t(req.self)].id)), req.round);
+  gls.seed = core::mix_seed(core::mix_seed(o.seed, stable_hash(req.robots[size_t(req.self)].id)), req.round);
   VrpRoutes routes = start;
   if (N > 0) {
     const GlsResult result = guided_local_search(inst, start, gls);

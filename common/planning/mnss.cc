@@ -69,7 +69,7 @@ std::vector<TaskView> order_views(std::vector<TaskView> views, const Eigen::Vect
 std::vector<TaskView> mnss_tour(const MapContext& ctx, const std::vector<TaskView>& views,
                                 const std::vector<int>& view_indices, const std::vector<Eigen::Vector3d>& neighbourhood,
                                 double radius, const SpeciesCapability& species, const Eigen::Vector3d& start,
-                                const std::optional<Eigen::Vector3d>& end, const PlannerOptions& o, Rng& rng,
+                                const std::optional<Eigen::Vector3d>& end, const PlannerOptions& o, core::PlanRng& rng,
                                 TourStats* stats, const std::unordered_set<uint64_t>* reachable) {
   TourStats local;
   TourStats& st = stats ? *stats : local;

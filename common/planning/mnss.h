@@ -13,7 +13,7 @@
 
 #include "common/planning/capabilities.h"
 #include "common/planning/clustering.h"
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 #include "common/planning/task_views.h"
 
 namespace hexplore::planning {
@@ -40,7 +40,7 @@ double tour_length(const std::vector<TaskView>& views, const Eigen::Vector3d& st
 std::vector<TaskView> mnss_tour(const MapContext& ctx, const std::vector<TaskView>& views,
                                 const std::vector<int>& view_indices, const std::vector<Eigen::Vector3d>& neighbourhood,
                                 double radius, const SpeciesCapability& species, const Eigen::Vector3d& start,
-                                const std::optional<Eigen::Vector3d>& end, const PlannerOptions& o, Rng& rng,
+                                const std::optional<Eigen::Vector3d>& end, const PlannerOptions& o, core::PlanRng& rng,
                                 TourStats* stats = nullptr,
                                 const std::unordered_set<uint64_t>* reachable = nullptr);
 

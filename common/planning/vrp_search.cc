@@ -9,7 +9,7 @@
 #include <unordered_map>
 
 #include "common/core/clock.h"
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 
 namespace hexplore::planning {
 namespace {
@@ -63,7 +63,7 @@ class Search {
     std::vector<int> order;
     for (int c = 0; c < N_; ++c)
       if (route_of_[size_t(c)] >= 0) order.push_back(c);
-    Rng rng(o_.seed);
+    core::PlanRng rng(o_.seed);
     rng.shuffle(order);
     for (int c : order) activate(c);
 

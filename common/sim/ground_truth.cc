@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/sim/rng.h"
+#include "common/core/rng.h"
 
 namespace hexplore::sim {
 
@@ -11,7 +11,7 @@ SurfaceSamples sample_surface(const TriangleMesh& mesh, double spacing_m, uint64
                               const Eigen::AlignedBox3d* crop) {
   SurfaceSamples out;
   out.spacing_m = spacing_m;
-  Rng rng(mix_seed(seed, 0x5A3D));
+  core::SimRng rng(core::sim_seed(seed, 0x5A3D));
   const double per_m2 = 1.0 / (spacing_m * spacing_m);
   out.points.reserve(static_cast<size_t>(mesh.surface_area() * per_m2 * 1.05) + 16);
   for (size_t i = 0; i < mesh.triangles.size(); ++i) {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/sim/rng.h"
+#include "common/core/rng.h"
 
 namespace hexplore::sim {
 namespace {
@@ -30,7 +30,7 @@ LidarModel::LidarModel(core::LidarConfig config, uint64_t seed) : config_(std::m
                          static_cast<float>(std::sin(el)));
     }
   }
-  Rng rng(mix_seed(seed, 0x1D4A));
+  core::SimRng rng(core::sim_seed(seed, 0x1D4A));
   noise_.resize(kNoiseTable);
   for (auto& n : noise_) n = static_cast<float>(rng.normal());
   world_dirs_.resize(dirs_.size());
@@ -74,7 +74,7 @@ LidarScan LidarModel::scan(const RayCaster& caster, const Eigen::Isometry3d& bod
   out.sensor_pose = sensor_pose(body_pose);
   out.origin = out.sensor_pose.translation();
   out.rays = dirs_.size();
-  Rng pick(noise_state_);
+  core::SimRng pick(noise_state_);
   noise_state_ = pick.next();
   Eigen::Matrix3d pattern = Eigen::Matrix3d::Identity();
   if (config_.non_repetitive) {

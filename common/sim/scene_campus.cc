@@ -85,7 +85,7 @@ Eigen::Vector3d flight_foot(const CampusBuilding& c, int k) {
 // One storey's rooms between the halls: a corridor along x through the middle, a row of rooms
 // either side (3.5-5 m wide, the last one or two 2.5-5 m, seeded), each with one door onto the
 // corridor; some rooms hold loose debris.
-void storey_rooms(MeshBuilder& b, Rng& rng, const Block& t, int floor) {
+void storey_rooms(MeshBuilder& b, core::SimRng& rng, const Block& t, int floor) {
   const Rect& f = t.where.footprint;
   const double z = t.where.base_z + floor * kStorey, h = kStorey - kSlab;
   const double xa = f.x0 + kHall, xb = f.x1 - kHall, cy = 0.5 * (f.y0 + f.y1);
@@ -116,7 +116,7 @@ void storey_rooms(MeshBuilder& b, Rng& rng, const Block& t, int floor) {
 // A block: shell (add_building), flights with their slab holes, a wall beside each
 // flight on the floor below and a parapet round its hole on the floor above (open where the
 // flight arrives and along the exterior wall), and every storey's rooms.
-void block(MeshBuilder& b, Rng& rng, const Block& t) {
+void block(MeshBuilder& b, core::SimRng& rng, const Block& t) {
   const CampusBuilding& c = t.where;
   const double run = kRisers * kTread;
   const double hole_from = std::ceil((kStorey - kSlab - kHeadroom) / kRise - 1.0) * kTread;
@@ -151,7 +151,7 @@ void block(MeshBuilder& b, Rng& rng, const Block& t) {
 // The parking deck: columns carry a roof deck over an open ground level; the ramp runs in a
 // walled bay along the south side; a parapet runs round the deck's edge and the ramp's hole
 // (open where the ramp arrives). Cars on both levels, clear of the ramp and the lane north of it.
-void parking_deck(MeshBuilder& b, Rng& rng) {
+void parking_deck(MeshBuilder& b, core::SimRng& rng) {
   const Rect& f = kDeck.footprint;
   const double a0 = kRampFootX, a1 = a0 + ramp_run(), y0 = f.y0 + kRail, y1 = y0 + kRampWidth;
   b.wedge({a0, y0, 0.0}, {a1, y1, kStorey}, Heading::kPlusX);
@@ -186,7 +186,7 @@ void plinth(MeshBuilder& b) {
 
 // The workshop's yard (x in [64, 76], y in [58, 72]): fenced on the south, west and north,
 // entered through a gap in the west fence, and paved wall to wall with fallen slabs.
-void masonry_yard(MeshBuilder& b, Rng& rng) {
+void masonry_yard(MeshBuilder& b, core::SimRng& rng) {
   add_wall(b, {64, 57.875}, {76, 57.875}, 0.25, 0.0, 2.5, {});
   add_wall(b, {64, 72.125}, {76, 72.125}, 0.25, 0.0, 2.5, {});
   add_wall(b, {63.875, 57.75}, {63.875, 72.25}, 0.25, 0.0, 2.5, {{5.25, 8.25, 0.0, 2.5}});
@@ -220,7 +220,7 @@ std::vector<Climb> campus_climbs() {
 }
 
 SceneInfo make_campus(uint64_t seed) {
-  Rng rng(mix_seed(seed, 6));
+  core::SimRng rng(core::sim_seed(seed, 6));
   MeshBuilder b;
   b.plane(-12, -14, 112, 112, 0.0);
 

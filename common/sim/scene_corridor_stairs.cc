@@ -8,7 +8,7 @@
 namespace hexplore::sim::detail {
 
 SceneInfo make_corridor_stairs(uint64_t seed) {
-  Rng rng(mix_seed(seed, 3));
+  core::SimRng rng(core::sim_seed(seed, 3));
   MeshBuilder b;
   b.plane(-6, -10, 42, 20, 0.0);
 

@@ -7,7 +7,7 @@
 namespace hexplore::sim::detail {
 
 SceneInfo make_multi_building(uint64_t seed) {
-  Rng rng(mix_seed(seed, 2));
+  core::SimRng rng(core::sim_seed(seed, 2));
   MeshBuilder b;
   b.plane(-6, -8, 46, 46, 0.0);
 

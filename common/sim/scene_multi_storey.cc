@@ -77,7 +77,7 @@ std::vector<Climb> multi_storey_climbs() {
 }
 
 SceneInfo make_multi_storey(uint64_t seed) {
-  Rng rng(mix_seed(seed, 5));
+  core::SimRng rng(core::sim_seed(seed, 5));
   MeshBuilder b;
   b.plane(-8, -8, 40, 30, 0.0);
   const Rect inner{kWall, kWall, 32.0 - kWall, 22.0 - kWall};

@@ -40,7 +40,7 @@ const Row kRows[] = {
 }  // namespace
 
 OfficeLayout office_layout(uint64_t seed) {
-  Rng rng(mix_seed(seed, 4));
+  core::SimRng rng(core::sim_seed(seed, 4));
   OfficeLayout out;
   out.footprint = {0, 0, 40, 19.5};
   out.corridors = {{kWall, 4.0 + kPartition / 2, 40 - kWall, 6.0 - kPartition / 2},
@@ -77,7 +77,7 @@ OfficeLayout office_layout(uint64_t seed) {
 
 SceneInfo make_office(uint64_t seed) {
   const OfficeLayout layout = office_layout(seed);
-  Rng rng(mix_seed(seed, 14));
+  core::SimRng rng(core::sim_seed(seed, 14));
   MeshBuilder b;
   b.plane(-8, -10, 48, 28, 0.0);
 

@@ -10,24 +10,24 @@
 
 #include "common/sim/building.h"
 #include "common/sim/mesh_builder.h"
-#include "common/sim/rng.h"
+#include "common/core/rng.h"
 #include "common/sim/scenes.h"
 
 namespace hexplore::sim::detail {
 
 // A heap of tumbled blocks around `center` within `radius`, up to `max_height` tall.
-void rubble_pile(MeshBuilder& b, Rng& rng, const Eigen::Vector2d& center, double radius, int blocks,
+void rubble_pile(MeshBuilder& b, core::SimRng& rng, const Eigen::Vector2d& center, double radius, int blocks,
                  double max_height);
 // A single stone (tilted block) resting on the ground.
-void stone(MeshBuilder& b, Rng& rng, const Eigen::Vector2d& center, double size);
+void stone(MeshBuilder& b, core::SimRng& rng, const Eigen::Vector2d& center, double size);
 // A car-sized vehicle (body and cabin) parked at `center` with heading `yaw`.
 void vehicle(MeshBuilder& b, const Eigen::Vector2d& center, double yaw, double base_z = 0.0);
 // A field of square cells of random height in [min_h, max_h] covering `area` (debris that
 // only a robot with a large enough step limit crosses).
-void debris_field(MeshBuilder& b, Rng& rng, const Rect& area, double cell, double min_h, double max_h,
+void debris_field(MeshBuilder& b, core::SimRng& rng, const Rect& area, double cell, double min_h, double max_h,
                   double base_z = 0.0);
 // Loose debris blocks on a floor inside `area`.
-void floor_debris(MeshBuilder& b, Rng& rng, const Rect& area, int blocks, double max_size, double floor_z);
+void floor_debris(MeshBuilder& b, core::SimRng& rng, const Rect& area, int blocks, double max_size, double floor_z);
 
 // A climb between two floors of a generated scene, as a path a robot follows from the lower
 // floor (path.front(), facing the second point) up to the upper floor at height top_z. Tests

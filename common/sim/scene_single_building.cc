@@ -8,7 +8,7 @@
 namespace hexplore::sim::detail {
 
 SceneInfo make_single_building(uint64_t seed) {
-  Rng rng(mix_seed(seed, 1));
+  core::SimRng rng(core::sim_seed(seed, 1));
   MeshBuilder b;
   b.plane(-8, -10, 41, 41, 0.0);
 

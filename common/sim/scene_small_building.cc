@@ -11,7 +11,7 @@
 namespace hexplore::sim::detail {
 
 SceneInfo make_small_building(uint64_t seed) {
-  Rng rng(mix_seed(seed, 6));
+  core::SimRng rng(core::sim_seed(seed, 6));
   MeshBuilder b;
   b.plane(-10, -10, 40, 40, 0.0);
 

@@ -52,7 +52,7 @@ std::string resolve_scene(const std::string& scene, const std::string& team_file
 
 namespace detail {
 
-void rubble_pile(MeshBuilder& b, Rng& rng, const Eigen::Vector2d& center, double radius, int blocks,
+void rubble_pile(MeshBuilder& b, core::SimRng& rng, const Eigen::Vector2d& center, double radius, int blocks,
                  double max_height) {
   for (int i = 0; i < blocks; ++i) {
     const double r = radius * std::sqrt(rng.uniform()), a = rng.uniform(0, 2 * M_PI);
@@ -64,7 +64,7 @@ void rubble_pile(MeshBuilder& b, Rng& rng, const Eigen::Vector2d& center, double
   }
 }
 
-void stone(MeshBuilder& b, Rng& rng, const Eigen::Vector2d& center, double size) {
+void stone(MeshBuilder& b, core::SimRng& rng, const Eigen::Vector2d& center, double size) {
   const Eigen::Vector3d half(size * rng.uniform(0.4, 0.6), size * rng.uniform(0.3, 0.5), size * rng.uniform(0.25, 0.4));
   b.oriented_box({center.x(), center.y(), half.z() * 0.8}, half, rng.uniform(0, M_PI), rng.uniform(-0.2, 0.2),
                  rng.uniform(-0.2, 0.2));
@@ -82,7 +82,7 @@ void vehicle(MeshBuilder& b, const Eigen::Vector2d& center, double yaw, double b
     }
 }
 
-void debris_field(MeshBuilder& b, Rng& rng, const Rect& area, double cell, double min_h, double max_h,
+void debris_field(MeshBuilder& b, core::SimRng& rng, const Rect& area, double cell, double min_h, double max_h,
                   double base_z) {
   const int nx = static_cast<int>(std::floor((area.x1 - area.x0) / cell + 1e-9));
   const int ny = static_cast<int>(std::floor((area.y1 - area.y0) / cell + 1e-9));
@@ -93,7 +93,7 @@ void debris_field(MeshBuilder& b, Rng& rng, const Rect& area, double cell, doubl
     }
 }
 
-void floor_debris(MeshBuilder& b, Rng& rng, const Rect& area, int blocks, double max_size, double floor_z) {
+void floor_debris(MeshBuilder& b, core::SimRng& rng, const Rect& area, int blocks, double max_size, double floor_z) {
   for (int i = 0; i < blocks; ++i) {
     const Eigen::Vector3d half(rng.uniform(0.15, max_size / 2), rng.uniform(0.15, max_size / 2),
                                rng.uniform(0.08, max_size / 3));

@@ -45,10 +45,12 @@ void HlmapService::setup(service::ServiceContext& context) {
   }
   segmenter_ = std::make_unique<highlevel::SupervoxelSegmenter>(params_, levels_);
   // The start time marks this run's increments: peers tell them from a previous run's (a
-  // restart numbers from 1 again) even when they miss increment 1.
+  // restart numbers from 1 again) even when they miss increment 1. Lockstep runs restart
+  // nothing and may not depend on wall time (compressed increments would change size).
   const auto started_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
       std::chrono::system_clock::now().time_since_epoch());
-  log_ = std::make_unique<highlevel::ContributionLog>(robot_id_, static_cast<uint64_t>(started_ms.count()));
+  const uint64_t incarnation = context.lockstep() ? 1 : static_cast<uint64_t>(started_ms.count());
+  log_ = std::make_unique<highlevel::ContributionLog>(robot_id_, incarnation);
   fusion_ = std::make_unique<highlevel::MapFusion>(levels_);
   repair_timeout_s_ = std::max(0.5, 2.0 * team.params.eta_c_s);
   sync_ = std::make_unique<highlevel::PeerSync>(robot_id_, repair_timeout_s_);

@@ -14,7 +14,7 @@
 #include "common/service/options.h"
 #include "common/service/status_values.h"
 #include "common/sim/mesh_io.h"
-#include "common/sim/rng.h"
+#include "common/core/rng.h"
 #include "common/sim/scene_error.h"
 #include "common/sim/sim_proto.h"
 #include "common/transport/topics.h"
@@ -78,10 +78,10 @@ void SimService::setup(service::ServiceContext& context) {
   auto* scan_family = m.histogram_family("hexplore_sim_scan_seconds", "Time to cast one LiDAR frame",
                                          metrics::latency_buckets_s());
   auto* rays_family = m.gauge_family("hexplore_sim_rays_per_second", "Rays cast per second in the last LiDAR frame");
-  const uint64_t robot_seed = sim::mix_seed(context.team().params.seed, *context.team().robot_index(robot_id_) + 1);
+  const uint64_t robot_seed = core::sim_seed(context.team().params.seed, *context.team().robot_index(robot_id_) + 1);
   for (size_t i = 0; i < species->lidars.size(); ++i) {
     Sensor s;
-    s.model = std::make_unique<sim::LidarModel>(species->lidars[i], sim::mix_seed(robot_seed, i + 1));
+    s.model = std::make_unique<sim::LidarModel>(species->lidars[i], core::sim_seed(robot_seed, i + 1));
     const metrics::Labels sensor_labels = {{"robot", robot_id_}, {"sensor", species->lidars[i].name}};
     s.scan_seconds = scan_family->add(sensor_labels);
     s.rays_per_second = rays_family->add(sensor_labels);

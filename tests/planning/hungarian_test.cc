@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "common/planning/hungarian.h"
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 
 namespace hexplore::planning {
 namespace {
@@ -40,7 +40,7 @@ std::pair<int, double> brute_force(const std::vector<std::vector<double>>& c) {
 }
 
 TEST(Hungarian, OptimalAgainstBruteForce) {
-  Rng rng(11);
+  core::PlanRng rng(11);
   int cases = 0;
   for (int rows = 1; rows <= 6; ++rows)
     for (int cols = 1; cols <= 6; ++cols)

@@ -71,7 +71,7 @@ TEST(Mnss, CoversEveryTargetWithFewerViews) {
   int total_before = 0, total_after = 0;
   for (const auto& cl : clusters) {
     if (cl.label != kPublic) continue;
-    Rng rng(3);
+    core::PlanRng rng(3);
     TourStats stats;
     const Eigen::Vector3d start = cl.center + Eigen::Vector3d(-8, 0, 0);
     const auto tour = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, caps.species[0], start, std::nullopt, o, rng,
@@ -87,7 +87,7 @@ TEST(Mnss, CoversEveryTargetWithFewerViews) {
     total_before += int(cl.views.size());
     total_after += int(tour.size());
     // Same seed, same tour.
-    Rng again(3);
+    core::PlanRng again(3);
     const auto repeat = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, caps.species[0], start, std::nullopt, o, again);
     ASSERT_EQ(repeat.size(), tour.size());
     for (size_t i = 0; i < tour.size(); ++i) EXPECT_EQ(repeat[i].key, tour[i].key);
@@ -107,7 +107,7 @@ TEST(Mnss, GroundAtTheFrontierIsSeenOnlyFromItsOwnVertex) {
   int frontier_targets = 0;
   for (const auto& cl : clusters) {
     if (cl.label != kPublic) continue;
-    Rng rng(3);
+    core::PlanRng rng(3);
     const auto tour = mnss_tour(ctx, views, cl.views, {cl.center}, b.o.eta_r_m, b.caps.species[0],
                                 cl.center + Eigen::Vector3d(-8, 0, 0), std::nullopt, b.o, rng);
     for (const auto& v : tour)
@@ -142,7 +142,7 @@ TEST(Mnss, ASharedViewSeesItsTargetsInsideTheMargin) {
   int shared = 0, own = 0;
   for (const auto& cl : cluster_views(views, o.eta_r_m)) {
     if (cl.label != kPublic) continue;
-    Rng rng(3);
+    core::PlanRng rng(3);
     const auto tour = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, caps.species[0],
                                 cl.center + Eigen::Vector3d(-8, 0, 0), std::nullopt, o, rng);
     std::set<uint64_t> wanted, got;
@@ -184,7 +184,7 @@ TEST(Mnss, NoViewStandsWhereItsTargetWasObservedInVain) {
     std::vector<TaskView> route;
     for (const auto& cl : cluster_views(views, o.eta_r_m)) {
       if (cl.label != kPublic) continue;
-      Rng rng(3);
+      core::PlanRng rng(3);
       const auto tour = mnss_tour(ctx, views, cl.views, {cl.center}, o.eta_r_m, caps.species[0],
                                   cl.center + Eigen::Vector3d(-8, 0, 0), std::nullopt, o, rng);
       route.insert(route.end(), tour.begin(), tour.end());

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "common/planning/mtsp/mtsp_problem.h"
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 
 namespace hexplore::planning::testing {
 
@@ -13,7 +13,7 @@ namespace hexplore::planning::testing {
 // robot_species[r]; city labels drawn from {public, 0..num_species-1} when `labelled`.
 inline MtspProblem random_problem(int cities, const std::vector<int>& robot_species, int num_species, RouteKind kind,
                                   uint64_t seed, bool labelled = false) {
-  Rng rng(seed);
+  core::PlanRng rng(seed);
   MtspProblem p;
   p.num_cities = cities;
   p.num_species = num_species;

@@ -13,7 +13,7 @@
 #include "common/planning/frontier.h"
 #include "common/planning/labels.h"
 #include "common/planning/planner_registry.h"
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 #include "common/planning/round_inputs.h"
 #include "tests/planning/planner_fixture.h"
 #include "tests/support/planning_scene.h"
@@ -312,7 +312,7 @@ TEST(Clustering, IndependentOfInputOrderAndPerLabel) {
       EXPECT_EQ(views[size_t(v)].label, c.label);
       EXPECT_LE((views[size_t(v)].position - c.center).norm(), 2 * f.options.eta_r_m);
     }
-  Rng rng(5);
+  core::PlanRng rng(5);
   for (int trial = 0; trial < 5; ++trial) {
     rng.shuffle(views);
     EXPECT_EQ(cluster_key_sets(views, cluster_views(views, f.options.eta_r_m)), reference);

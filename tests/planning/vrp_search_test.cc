@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 #include "common/planning/vrp_search.h"
 
 namespace hexplore::planning {
@@ -17,7 +17,7 @@ namespace {
 // cannot serve those with index % 5 == 4 that class 0 can (so someone can serve each);
 // facade-like service of 2 s on every third customer.
 VrpInstance random_instance(int customers, int vehicles, uint64_t seed) {
-  Rng rng(seed);
+  core::PlanRng rng(seed);
   VrpInstance in;
   in.customers = customers;
   for (int v = 0; v < vehicles; ++v) in.vehicle_class.push_back(v % 2);

@@ -6,7 +6,7 @@
 
 #include "common/sim/building.h"
 #include "common/sim/mesh_builder.h"
-#include "common/sim/rng.h"
+#include "common/core/rng.h"
 #include "common/sim/scene_error.h"
 #include "common/sim/scene_parts.h"
 #include "common/sim/scenes.h"
@@ -21,7 +21,7 @@ TriangleMesh test_course() {
   b.plane(-10, -10, 30, 20, 0.0);
   b.stairs({5.0, 0.0, 0.0}, Heading::kPlusX, 1.6, 10, 0.175, 0.28);
   b.box({7.8, -0.8, 0}, {12, 0.8, 1.75});  // landing at the top of the stairs
-  Rng rng(3);
+  core::SimRng rng(3);
   detail::debris_field(b, rng, Rect{5, 9, 9, 11}, 0.5, 0.10, 0.20);
   b.box({-10, -5.2, 0}, {30, -5.0, 2.5});
   return b.take();

@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 
 namespace hexplore::planning {
 
@@ -12,7 +12,7 @@ highlevel::MapUpdate synthetic_scene(const SyntheticSceneOptions& o) {
   highlevel::MapUpdate up;
   up.full_snapshot = true;
   up.version = 1;
-  Rng rng(o.seed);
+  core::PlanRng rng(o.seed);
   const double c = o.cell_m;
   // Wall cells (no ground there unless a door) and their outward normals.
   std::set<std::pair<int, int>> wall, door;

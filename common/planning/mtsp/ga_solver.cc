@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "common/core/clock.h"
-#include "common/planning/rng.h"
+#include "common/core/rng.h"
 
 namespace hexplore::planning {
 namespace {
@@ -293,7 +293,7 @@ class Ga {
   const MtspProblem& p_;
   GaOptions o_;
   std::vector<int> transferable_;
-  Rng rng_;
+  core::PlanRng rng_;
   std::vector<std::vector<int>> species_robots_;
   std::vector<std::vector<int>> public_options_;
   std::vector<Op> ops_;
