@@ -121,7 +121,12 @@ void MappingService::setup(service::ServiceContext& context) {
     context.loop().add_timer(seconds(options_.full_snapshot_period_s), [this] { publish_full_snapshot(); });
   }
   if (!options_.map_file.empty() && options_.save_period_s > 0.0) {
-    context.loop().add_timer(seconds(options_.save_period_s), [this] { save_map(); });
+    context.loop().add_timer(seconds(options_.save_period_s), [this] {
+      // What a restart after a crash (SIGKILL) resumes from; the e2e restart test reads it.
+      if (save_map())
+        core::LogLine(core::LogLevel::kDebug, "mapping")
+            << robot_id_ << ": saved " << map_->voxel_count() << " voxels to " << options_.map_file;
+    });
   }
   // A resumed map goes out whole first, so the hlmap starts from it instead of from deltas.
   if (map_->voxel_count() > 0) publish_full_snapshot();

@@ -5,9 +5,11 @@
 #   run_e2e.sh CASE LAUNCHER STATION WORKDIR BASE_PORT [EXPERIMENT]
 # CASE: explore (plain run), switch (planner switched to no-mnss mid-run via the station's
 # --send), kill (every service of mr1000a killed mid-run; slugcat1 must finish the work),
-# restart (mr1000a's mapping service, then its hlmap, stopped mid-run and started again by hand
-# with the same options: the mapping must resume every voxel from its map file, its completeness
-# must not drop, and the team must still end the mission with every map increment applied),
+# restart (mr1000a's mapping service killed mid-run (SIGKILL, a crash), then its hlmap stopped
+# (SIGTERM), each started again by hand with the same options: the mapping must resume every
+# voxel of its last periodic save, its completeness must come back, the teammate must replace
+# the restarted hlmap's contribution, and the team must still end the mission with every map
+# increment applied),
 # loss (lockstep through the launcher, every receiver missing 30 % of the team's messages on
 # every topic, E2E_LOSS: the mission must still end, and the map gaps must be repaired),
 # lockstep (the one-process fast mode through the launcher, then the same seed again through
@@ -98,17 +100,17 @@ restarted=
 cleanup() { kill "$launcher" $restarted 2>/dev/null || true; }
 trap cleanup EXIT
 
-# restart_service SERVICE: stops mr1000a's SERVICE (SIGTERM, as a supervisor would) and starts
-# the same executable again with the options the launcher gave it; its output goes to
-# logs/mr1000a-SERVICE-restarted.log.
+# restart_service SERVICE SIGNAL: stops mr1000a's SERVICE (TERM as a supervisor would, KILL as
+# a crash) and starts the same executable again with the options the launcher gave it; its
+# output goes to logs/mr1000a-SERVICE-restarted.log.
 restart_service() {
-  local service=$1 line pid exe
+  local service=$1 signal=$2 line pid exe
   line=$(grep -m 1 "^\[launch\] started mr1000a/$service (pid" "$work/launch.log") || fail "no mr1000a/$service in the launch log"
   pid=$(sed 's/.*(pid \([0-9]*\)).*/\1/' <<< "$line")
   exe=$(sed 's/.*): //' <<< "$line")
-  kill -TERM "$pid"
+  kill -"$signal" "$pid"
   for _ in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.2; done
-  kill -0 "$pid" 2>/dev/null && fail "mr1000a's $service did not stop on SIGTERM"
+  kill -0 "$pid" 2>/dev/null && fail "mr1000a's $service did not stop on SIG$signal"
   # shellcheck disable=SC2086
   "$exe" --config "$work/team.yaml" --robot mr1000a $child_args > "$work/logs/mr1000a-$service-restarted.log" 2>&1 &
   restarted+=" $!"
@@ -142,14 +144,15 @@ case $case in
     ;;
   restart)
     wait_sim_time 25
-    restart_service mapping
+    restart_service mapping KILL
     stopped_at=$(sim_time)
+    # A crash saves nothing: what the restart resumes is the last periodic save (every 5 s).
     saved=$(sed -n 's/.*mr1000a: saved \([0-9]*\) voxels to .*/\1/p' "$work/logs/mr1000a-mapping.log" | tail -n 1)
-    [ -n "$saved" ] && [ "$saved" -gt 0 ] || fail "mr1000a's mapping service saved no map when stopped"
-    echo "stopped mr1000a's mapping service at t=${stopped_at}s with $saved voxels saved, and restarted it"
+    [ -n "$saved" ] && [ "$saved" -gt 0 ] || fail "mr1000a's mapping service had saved no map when killed"
+    echo "killed mr1000a's mapping service at t=${stopped_at}s, $saved voxels in its last periodic save, and restarted it"
     # The hlmap next: it starts empty and must rebuild from its mapping and its teammate.
     wait_sim_time 45
-    restart_service hlmap
+    restart_service hlmap TERM
     echo "stopped mr1000a's hlmap at t=$(sim_time)s, and restarted it"
     ;;
   *) fail "unknown case" ;;
@@ -186,14 +189,15 @@ def check(condition, message):
     global ok
     print(("ok   " if condition else "FAIL ") + message)
     ok &= condition
-# mr1000a's own map as the station samples it: nothing lost over the restart, and growing after.
+# mr1000a's own map as the station samples it: what came after the last save is lost with the
+# crash (at most 5 s of scans), then the restarted service maps again past where it was.
 rows = [(float(r["sim_time_s"]), float(r["mr1000a"])) for r in csv.DictReader(open(results + "/completeness.csv"))]
 before = [c for t, c in rows if t <= stopped_at]
 after = [c for t, c in rows if t > stopped_at]
-check(bool(before) and bool(after), f"{len(before)} completeness samples before the stop, {len(after)} after")
+check(bool(before) and bool(after), f"{len(before)} completeness samples before the kill, {len(after)} after")
 if before and after:
-    check(min(after) >= before[-1] - 0.005,
-          f"mr1000a's completeness {100 * before[-1]:.1f} % at the stop, at least {100 * min(after):.1f} % after")
+    check(min(after) >= before[-1] - 0.10,
+          f"mr1000a's completeness {100 * before[-1]:.1f} % at the kill, at least {100 * min(after):.1f} % after (10 points allowed)")
     check(after[-1] > before[-1], f"and {100 * after[-1]:.1f} % at the end: the restarted service kept mapping")
 # The hlmaps caught up: every robot applied every teammate's increments, slugcat1 those of
 # mr1000a's restarted hlmap (numbered from 1 again) in place of the old ones.
