@@ -51,6 +51,7 @@ std::string round_trace_json(const RoundTrace& round, const PlanRequest& req, co
     << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
     << ", \"cut_off\": " << f.views_cut_off
     << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
+    << ", \"not_aimed\": " << f.targets_not_aimed
     << ", \"legs_kept\": " << f.legs_kept << ", \"legs_switched\": " << f.legs_switched << ", \"stretch_views_kept\": " << f.stretch_views_kept << ", \"passing_observations\": " << round.passing_observations
     << ", \"observing_s\": " << f.observing_s << ", \"targets_judged\": " << f.targets_judged
     << ", \"targets_complete_when_judged\": " << f.targets_complete_when_judged << ", \"next\": [";

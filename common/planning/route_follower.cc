@@ -276,7 +276,16 @@ double RouteFollower::plan_aims(int facade_views) {
   // less time the first aims only.
   const double dwell = std::max(1, facade_views) * obs;
   const size_t fit = std::max<size_t>(1, size_t(dwell / std::max(1e-3, options_.min_aim_s)));
-  if (aims_.size() > fit) aims_.resize(fit);
+  if (aims_.size() > fit) {
+    if (options_.aim_each_target) {
+      // A gimbal never points at the targets of the aims that do not fit: no verdict on them
+      // (it would count a look that did not happen as a failed attempt; multi-building, seed 1:
+      // 31 of one view's 51 targets at 57 s), so they stay open and are planned again.
+      for (size_t i = fit; i < aims_.size(); ++i) std::erase(observed_targets_, aims_[i].target);
+      counters_.targets_not_aimed += int(aims_.size() - fit);
+    }
+    aims_.resize(fit);
+  }
   return dwell / double(aims_.size());
 }
 

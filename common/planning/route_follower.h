@@ -82,6 +82,7 @@ struct FollowerCounters {
   int views_cut_off = 0;        // a path only through what `keep_off` excludes (an attempt)
   int views_done_before = 0;    // every target complete or given up before the robot got there
   int dwells_cut_short = 0;     // every target complete before the dwell was over
+  int targets_not_aimed = 0;    // a gimbal's aims beyond a view's dwell: not looked at, not judged
   int legs_kept = 0;            // new routes that kept the leg being driven first
   int legs_switched = 0;        // new routes whose first view was much nearer than the leg's
   int stretch_views_kept = 0;   // views a new route kept in the old order after the leg

@@ -183,6 +183,25 @@ TEST(RouteFollower, PerViewTheTargetsOfAViewShareOneObservationTime) {
   EXPECT_FALSE(leave->observing);
 }
 
+// A gimbal points at as many of a view's targets as its observation time holds (a scan each);
+// the others get no verdict, so no failed attempt for a look that did not happen.
+TEST(RouteFollower, AGimbalJudgesOnlyTheTargetsItPointedAt) {
+  Drive d;
+  d.options.aim_each_target = true;  // per-view dwell: 10 s shared
+  d.options.min_aim_s = 5.0;         // the 10 s hold two aims of the view's three
+  RouteFollower f(d.options, 0);
+  const TaskView three = view_of_three(d.map, {6.5, 6.5, 0});
+  const TaskView next = view_at(d.map, {1.5, 6.5, 0}, false);
+  f.set_route({three, next}, {1.5, 1.5, 0}, d.map);
+  ASSERT_TRUE(f.step(0.0, three.position, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  for (double t = 0.2; t < 14.0; t += 0.2) f.step(t, three.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  EXPECT_FALSE(f.observing());
+  EXPECT_EQ(f.counters().targets_not_aimed, 1);
+  EXPECT_EQ(f.counters().targets_judged, 2);
+  EXPECT_EQ(d.ledger.attempts(kWall), 1);
+  EXPECT_EQ(d.ledger.attempts(kWall + 2), 0);  // never pointed at
+}
+
 TEST(RouteFollower, FixedSensorsObserveAllTargetsAtOnceForTheSumOfTheirTimes) {
   Drive d;
   d.options.observation_time_s = 0.1;  // a SLUGCAT: ten targets a second, no gimbal
