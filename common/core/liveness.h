@@ -16,7 +16,9 @@
 //                     sim has been silent this long;
 //   station_s         station: a robot whose planning status is older than this is not live
 //                     (never shorter than two route time-outs, eta_t).
-// Times are on the service's loop clock (sim time in lockstep, wall time otherwise).
+// Times are on the service's loop clock (sim time in lockstep, wall time otherwise), except
+// planning's: its robot's sim time, the clock of its route time-outs (eta_t), so that a lost
+// teammate's share is taken within the same number of rounds at any real-time factor.
 
 #include <cmath>
 #include <cstdint>

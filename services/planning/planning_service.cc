@@ -124,7 +124,13 @@ void PlanningService::setup(service::ServiceContext& context) {
   sub.on<v1::RobotPose>(topics::pose(robot_id_), [this](const transport::Received<v1::RobotPose>& r) {
     positions_[robot_id_] = position_of(r.message);
     odometry_m_ = r.message.odometry_m();
-    if (r.header.sim_time_ns() > 0) sim_time_ns_ = r.header.sim_time_ns();
+    if (r.header.sim_time_ns() > 0) {
+      // From the first stamped pose on, teammates' silences are timed in sim time (below):
+      // their time to show up starts again on that clock.
+      if (sim_time_ns_ == 0)
+        for (const auto& t : context_->team().robots) teammates_.heard(t.id, r.header.sim_time_ns());
+      sim_time_ns_ = r.header.sim_time_ns();
+    }
     own_motion_ = r.message.state();
   });
   sub.on<v1::RobotPose>(std::string(topics::kTeamPose), [this](const transport::Received<v1::RobotPose>& r) {
@@ -132,8 +138,8 @@ void PlanningService::setup(service::ServiceContext& context) {
     if (!context_->team().find_robot(id)) return;
     positions_[id] = position_of(r.message);
     // Back after a silence (out of range, a partition): it missed the given-up changes meanwhile.
-    if (id != robot_id_ && !teammates_.alive(id, context_->now_ns())) give_up_sharing_.whole_set_next();
-    teammates_.heard(id, context_->now_ns());
+    if (id != robot_id_ && !teammates_.alive(id, now_ns())) give_up_sharing_.whole_set_next();
+    teammates_.heard(id, now_ns());
     if (id == robot_id_) return;
     // A teammate that stops moving and goes idle has finished its route.
     const int state = r.message.state();
@@ -241,7 +247,7 @@ void PlanningService::on_mission(const v1::MissionCommand& command) {
 std::vector<planning::RobotState> PlanningService::team_states(int& self) const {
   std::vector<planning::RobotState> out;
   const auto& team = context_->team();
-  const int64_t now = context_->now_ns();
+  const int64_t now = now_ns();
   self = 0;
   for (const auto& r : team.robots) {
     const bool me = r.id == robot_id_;
@@ -254,10 +260,18 @@ std::vector<planning::RobotState> PlanningService::team_states(int& self) const 
   return out;
 }
 
+bool PlanningService::team_shrank() const {
+  int self = 0;
+  const auto now = team_states(self);
+  return std::any_of(planned_team_.begin(), planned_team_.end(), [&](const std::string& id) {
+    return std::none_of(now.begin(), now.end(), [&](const planning::RobotState& r) { return r.id == id; });
+  });
+}
+
 std::unordered_set<uint64_t> PlanningService::avoided_vertices() const {
   std::unordered_set<uint64_t> out;
   const auto& team = context_->team();
-  const int64_t now = context_->now_ns();
+  const int64_t now = now_ns();
   const auto radii = highlevel::body_radii(team);
   const auto own = team.species_index(team.robots[size_t(self_)].species);
   const double own_radius = own ? radii[size_t(*own)] : 0.0;
@@ -313,6 +327,7 @@ void PlanningService::cycle() {
   std::string reason;
   if (last_plan_ns_ == 0) reason = "first round";
   else if (follower_->finished() && age_s >= min_replan_s_) reason = "route finished";
+  else if (team_shrank() && age_s >= min_replan_s_) reason = "teammate lost";  // its share is ours now
   else if (age_s >= eta_t_s_ && !follower_->observing()) reason = "route timed out";  // not mid-observation
   else if (peer_finished_ && age_s >= min_replan_s_) reason = "teammate finished its route";
   if (!reason.empty()) replan(reason);
@@ -327,6 +342,8 @@ void PlanningService::replan(const std::string& reason) {
   planning::PlanRequest req;
   req.map = map_.get();
   req.robots = team_states(req.self);
+  planned_team_.clear();
+  for (const auto& r : req.robots) planned_team_.push_back(r.id);
   req.round = ++round_;
   req.given_up = &ledger_;
   for (const auto& [source, s] : shared_) req.shared.push_back(s);

@@ -76,6 +76,8 @@ class PlanningService : public service::Service {
   std::unordered_set<uint64_t> avoided_vertices() const;
   // The live team (self, and teammates heard from recently); sets `self` to our index in it.
   std::vector<planning::RobotState> team_states(int& self) const;
+  // Whether a robot of the last round's team has left it since (gone silent, or stuck).
+  bool team_shrank() const;
 
   service::ServiceContext* context_ = nullptr;
   std::string robot_id_;
@@ -89,6 +91,7 @@ class PlanningService : public service::Service {
 
   std::unique_ptr<highlevel::HighLevelMap> map_;
   FusedMapOrder map_order_;
+  std::vector<std::string> planned_team_;  // the robots the last round divided the work among
   bool snapshot_pending_ = false;
   std::map<std::string, Eigen::Vector3d> positions_;  // robot id -> last known position
   std::map<std::string, planning::ReferenceSolution> shared_;  // source robot -> solution

@@ -94,6 +94,8 @@ mode=()
 child_args="--results $work/results --log-level debug --real-time-factor ${E2E_RTF:-3}"
 # Every mapping service keeps its map in a file of its own (saved every 5 s and on SIGTERM).
 [ "$case" = restart ] && child_args+=" --map-file $work/maps/{robot}.map --save-period-s 5" && mkdir -p "$work/maps"
+# The kill case reads the survivor's planning rounds (one JSON line each).
+[ "$case" = kill ] && child_args+=" --trace-dir $work/traces"
 "$launch" "${mode[@]}" --config "$work/team.yaml" --log-dir "$work/logs" --child-args "$child_args" > "$work/launch.log" 2>&1 &
 launcher=$!
 restarted=
@@ -139,8 +141,9 @@ case $case in
     wait_sim_time 20
     pids=$(sed -n 's/^\[launch\] started mr1000a\/[a-z]* (pid \([0-9]*\)).*/\1/p' "$work/launch.log")
     [ -n "$pids" ] || fail "no mr1000a process found in the launch log"
+    killed_at=$(sim_time)  # the station's last progress line: at or before the kill
     for pid in $pids; do kill -KILL "$pid" 2>/dev/null || true; done
-    echo "killed mr1000a's services: $pids"
+    echo "killed mr1000a's services at t=${killed_at}s: $pids"
     ;;
   restart)
     wait_sim_time 25
@@ -174,8 +177,21 @@ case $case in
       fail "mr1000a's planner did not switch"
     ;;
   kill)
-    # The survivor planned for itself alone after the loss, and went on to cover more.
-    grep -q "1 live" "$work/logs/slugcat1-planning.log" || fail "slugcat1 never planned without mr1000a"
+    # The survivor takes the dead robot's share: its first round planned alone (every open
+    # cluster its own) comes within 2 eta_t (20 s) of the kill.
+    python3 - "$work/traces/planning-slugcat1.jsonl" "$killed_at" <<'PY' || fail "see above"
+import json, sys
+killed_at = float(sys.argv[2])
+rounds = [json.loads(line) for line in open(sys.argv[1]) if line.startswith("{")]
+alone = [r for r in rounds if r["t"] > killed_at and r["live"] == 1]
+if not alone:
+    sys.exit("FAIL slugcat1 never planned without mr1000a")
+first = alone[0]
+delay = first["t"] - killed_at
+print(f"{'ok  ' if delay <= 20.0 else 'FAIL'} slugcat1 planned mr1000a's share {delay:.1f} s after the kill "
+      f"(round {first['round']}, {first['open_views']} open views, at most 20 s)")
+sys.exit(0 if delay <= 20.0 else 1)
+PY
     ;;
   restart)
     resumed=$(sed -n 's/.*mr1000a: resumed \([0-9]*\) voxels from .*/\1/p' "$work/logs/mr1000a-mapping-restarted.log")
