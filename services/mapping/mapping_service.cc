@@ -121,12 +121,8 @@ void MappingService::setup(service::ServiceContext& context) {
     context.loop().add_timer(seconds(options_.full_snapshot_period_s), [this] { publish_full_snapshot(); });
   }
   if (!options_.map_file.empty() && options_.save_period_s > 0.0) {
-    context.loop().add_timer(seconds(options_.save_period_s), [this] {
-      // What a restart after a crash (SIGKILL) resumes from; the e2e restart test reads it.
-      if (save_map())
-        core::LogLine(core::LogLevel::kDebug, "mapping")
-            << robot_id_ << ": saved " << map_->voxel_count() << " voxels to " << options_.map_file;
-    });
+    // What a restart after a crash (SIGKILL) resumes from; the e2e restart test reads the log.
+    context.loop().add_timer(seconds(options_.save_period_s), [this] { save_map(core::LogLevel::kDebug); });
   }
   // A resumed map goes out whole first, so the hlmap starts from it instead of from deltas.
   if (map_->voxel_count() > 0) publish_full_snapshot();
@@ -135,9 +131,7 @@ void MappingService::setup(service::ServiceContext& context) {
 
 void MappingService::on_shutdown(service::ServiceContext&) {
   publish_changes();
-  if (save_map())
-    core::LogLine(core::LogLevel::kInfo, "mapping")
-        << robot_id_ << ": saved " << map_->voxel_count() << " voxels to " << options_.map_file;
+  save_map(core::LogLevel::kInfo);
 }
 
 void MappingService::fill_status(v1::ServiceStatus& status) {
@@ -284,10 +278,12 @@ void MappingService::publish_full_snapshot() {
   publish_delta(perception::to_voxel_delta(map_->voxels(), map_->resolution(), true));
 }
 
-bool MappingService::save_map() {
+bool MappingService::save_map(core::LogLevel saved_level) {
   if (!map_ || options_.map_file.empty()) return false;
   try {
     map_->save(options_.map_file);
+    core::LogLine(saved_level, "mapping") << robot_id_ << ": saved " << map_->voxel_count() << " voxels to "
+                                          << options_.map_file;
     return true;
   } catch (const perception::MapFileError& e) {
     saves_failed_->increment();

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "common/core/liveness.h"
+#include "common/core/log.h"
 #include "common/metrics/registry.h"
 #include "common/perception/perception_map.h"
 #include "common/service/service.h"
@@ -62,7 +63,9 @@ class MappingService : public service::Service {
   void publish_changes();
   void publish_full_snapshot();
   void publish_delta(const v1::VoxelDelta& delta);
-  bool save_map();  // false when there is no map file or the save failed (counted, logged)
+  // Logs "saved N voxels to F" at `saved_level`; false when there is no map file or the save
+  // failed (counted, logged).
+  bool save_map(core::LogLevel saved_level);
 
   service::ServiceContext* context_ = nullptr;
   std::string robot_id_;
