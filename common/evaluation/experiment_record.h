@@ -82,6 +82,10 @@ struct ExperimentRecord {
   double exploration_time_s = 0.0;
   std::string end_reason;  // "no task views remain", "time limit", "stopped", ...
   double wall_time_s = 0.0;
+  // Times the station was restarted mid-mission and resumed this record, and the mission time
+  // it heard nothing meanwhile (no poses, traffic or planning rounds were recorded then).
+  uint32_t station_restarts = 0;
+  double station_unrecorded_s = 0.0;
   // The team's reconstruction: occupied voxel centres of the union map at the end, on a grid
   // of map_resolution_m (exported as map.ply, map.pcd, map.bt).
   std::vector<Eigen::Vector3f> final_map_points_m;

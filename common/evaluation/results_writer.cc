@@ -101,6 +101,8 @@ std::string summary_json(const ExperimentRecord& r) {
   j << "  \"end_reason\": " << quoted(r.end_reason) << ",\n";
   j << "  \"exploration_time_s\": " << number(r.exploration_time_s) << ",\n";
   j << "  \"wall_time_s\": " << number(r.wall_time_s) << ",\n";
+  j << "  \"station\": {\"restarts\": " << r.station_restarts << ", \"unrecorded_s\": " << number(r.station_unrecorded_s)
+    << "},\n";
   j << "  \"final_completeness\": " << number(r.final_team_completeness()) << ",\n";
   j << "  \"final_observable_completeness\": "
     << number(r.completeness.empty() ? 0.0 : r.completeness.back().team_observable) << ",\n";

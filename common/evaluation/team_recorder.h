@@ -16,6 +16,10 @@
 #include "hexplore/v1/pose.pb.h"
 #include "hexplore/v1/status.pb.h"
 
+namespace hexplore::v1 {
+class StationCheckpoint;
+}
+
 namespace hexplore::evaluation {
 
 // Paper category of a team topic ("pose", "incremental_map", ...); nullopt for other topics.
@@ -47,6 +51,13 @@ class TeamRecorder {
   // hlmap's the map-convergence values (RobotTrack::own_increment_seq, synced_seq).
   void on_status(const std::string& robot, std::string_view service, const v1::ServiceStatus& status);
   void on_completeness(CompletenessSample sample);
+
+  // The recorder's whole state, for a station restarted mid-mission (record_checkpoint.cc).
+  // resume() continues from a checkpoint as if the station had heard nothing for a while: it
+  // counts the restart and the mission time between the checkpoint's latest sim time and
+  // `now_sim_time_s` as unrecorded.
+  v1::StationCheckpoint checkpoint() const;
+  void resume(const v1::StationCheckpoint& checkpoint, double now_sim_time_s);
 
   ExperimentRecord& record() { return record_; }
   const ExperimentRecord& record() const { return record_; }

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <utility>
 
 #include "common/core/clock.h"
@@ -10,6 +11,7 @@
 #include "common/core/log.h"
 #include "common/service/options.h"
 #include "common/service/status_values.h"
+#include "common/evaluation/record_checkpoint.h"
 #include "common/evaluation/report_script.h"
 #include "common/evaluation/results_writer.h"
 #include "common/transport/topics.h"
@@ -110,6 +112,15 @@ void StationService::setup(service::ServiceContext& context) {
   monitor.silent_after_s = std::max(context.team().params.liveness.station_s, 2.0 * context.team().params.eta_t_s);
   monitor_ = std::make_unique<evaluation::MissionMonitor>(monitor);
   gauges_ = std::make_unique<StationGauges>(context.metrics(), context.team());
+  checkpoint_errors_ = context.metrics()
+                           .counter_family("hexplore_station_checkpoint_errors_total",
+                                           "Station checkpoints that could not be written, or found broken at start")
+                           ->add({});
+  // In lockstep the station shares the team's process: it cannot restart on its own.
+  if (!context.lockstep()) {
+    checkpoint_path_ = (std::filesystem::path(options_.results_dir) / evaluation::kCheckpointFileName).string();
+    find_checkpoint();
+  }
 
   subscribe_team(context);
   // On authenticated links only the holder of the station's key may command the team (an
@@ -188,6 +199,7 @@ void StationService::tick() {
   if (!recorder_->started()) {
     const bool everyone = heard_.size() == robots;
     const bool waited = first_heard_s_ && loop_s() - *first_heard_s_ > options_.start_wait_s;
+    if ((everyone || waited) && resumable_ && resume_from_checkpoint()) return;
     if (options_.autostart && (everyone || waited)) {
       v1::MissionCommand start;
       start.mutable_start();
@@ -230,6 +242,7 @@ void StationService::request_snapshots() {
               evaluation::CompletenessSample sample = evaluator_->evaluate(recorder_->mission_time_s());
               gauges_->on_completeness(sample);
               recorder_->on_completeness(std::move(sample));
+              save_checkpoint();
             },
             kSnapshotTimeout);
   }
@@ -311,12 +324,14 @@ void StationService::finish(const std::string& reason) {
     auto& record = recorder_->record();
     record.end_reason = end_reason_;
     record.exploration_time_s = recorder_->mission_time_s();
-    record.wall_time_s = core::ns_to_s(core::monotonic_ns() - start_wall_ns_);
+    record.wall_time_s = wall_before_resume_s_ + core::ns_to_s(core::monotonic_ns() - start_wall_ns_);
     record.final_map_points_m = evaluator_->union_points();
     record.map_resolution_m = context_->team().params.map_resolution_m;
     record_complete_ = true;
     try {
       const auto files = evaluation::write_results(record, options_.results_dir);
+      // The results hold the whole record now; a station started later begins a new one.
+      if (!checkpoint_path_.empty()) std::filesystem::remove(checkpoint_path_);
       std::printf("[station] mission over (%s) after %.1f s sim time; completeness %.1f%%; results in %s (%zu files)\n",
                   end_reason_.c_str(), record.exploration_time_s, 100.0 * record.final_team_completeness(),
                   options_.results_dir.c_str(), files.size());
@@ -335,9 +350,76 @@ void StationService::finish(const std::string& reason) {
   });
 }
 
+void StationService::find_checkpoint() {
+  try {
+    resumable_ = evaluation::load_checkpoint(checkpoint_path_);
+  } catch (const evaluation::CheckpointError& e) {
+    checkpoint_errors_->increment();
+    core::LogLine(core::LogLevel::kWarn, "station") << e.what() << "; starting a new record";
+    return;
+  }
+  if (!resumable_) return;
+  if (const std::string why = evaluation::checkpoint_mismatch(*resumable_, context_->team()); !why.empty()) {
+    core::LogLine(core::LogLevel::kWarn, "station")
+        << checkpoint_path_ << " is not a record of this team's mission (" << why << "); starting a new record";
+    resumable_.reset();
+    return;
+  }
+  core::LogLine(core::LogLevel::kInfo, "station")
+      << "found the record of a mission in progress (" << checkpoint_path_ << ", mission time "
+      << resumable_->latest_sim_time_s() - resumable_->start_sim_time_s() << " s); resuming it once the team is heard";
+}
+
+bool StationService::resume_from_checkpoint() {
+  const v1::StationCheckpoint checkpoint = std::move(*resumable_);
+  resumable_.reset();
+  const double now = recorder_->latest_sim_time_s();
+  // The robots' sim clocks go on while the station is down; behind the checkpoint, they are
+  // a new mission's.
+  if (now < checkpoint.latest_sim_time_s()) {
+    core::LogLine(core::LogLevel::kInfo, "station")
+        << "the record in " << checkpoint_path_ << " ends at sim time " << checkpoint.latest_sim_time_s()
+        << " s, the team is at " << now << " s: an earlier mission's; starting a new record";
+    return false;
+  }
+  recorder_->resume(checkpoint, now);
+  const double mission_s = recorder_->mission_time_s();
+  last_snapshot_s_ = checkpoint.completeness_size() > 0
+                         ? checkpoint.completeness(checkpoint.completeness_size() - 1).sim_time_s()
+                         : mission_s;
+  last_open_targets_s_ = mission_s;
+  wall_before_resume_s_ =
+      std::max(0.0, core::ns_to_s(core::wall_time_ns()) - 1e-3 * static_cast<double>(checkpoint.start_wall_ms()));
+  start_wall_ns_ = core::monotonic_ns();
+  core::LogLine(core::LogLevel::kInfo, "station")
+      << "resumed the mission record at mission time " << mission_s << " s (restart "
+      << recorder_->record().station_restarts << "; "
+      << mission_s - (checkpoint.latest_sim_time_s() - checkpoint.start_sim_time_s()) << " s unrecorded)";
+  return true;
+}
+
+void StationService::save_checkpoint() {
+  if (checkpoint_path_.empty() || finished_) return;
+  v1::StationCheckpoint checkpoint = recorder_->checkpoint();
+  const double wall_s = wall_before_resume_s_ + core::ns_to_s(core::monotonic_ns() - start_wall_ns_);
+  checkpoint.set_start_wall_ms(static_cast<int64_t>(1e3 * (core::ns_to_s(core::wall_time_ns()) - wall_s)));
+  try {
+    std::filesystem::create_directories(options_.results_dir);
+    evaluation::save_checkpoint(checkpoint, checkpoint_path_);
+  } catch (const std::exception& e) {  // CheckpointError, or filesystem_error from the folder
+    checkpoint_errors_->increment();
+    core::log_once(core::LogLevel::kWarn, "station", "checkpoint-save",
+                   std::string(e.what()) + " (a restarted station could not resume the record; logged once)");
+  }
+}
+
 void StationService::on_shutdown(service::ServiceContext& context) {
-  if (!finished_ && recorder_ && recorder_->started())
-    core::log(core::LogLevel::kWarn, "station", "stopped before the mission ended; no results written");
+  if (finished_ || !recorder_ || !recorder_->started()) return;
+  save_checkpoint();
+  core::log(core::LogLevel::kWarn, "station",
+            checkpoint_path_.empty() ? "stopped before the mission ended; no results written"
+                                     : "stopped before the mission ended; no results written, the record is in " +
+                                           checkpoint_path_ + " for a station started again");
 }
 
 void StationService::fill_status(v1::ServiceStatus& status) {

@@ -3,7 +3,9 @@
 // stop, switch planner) to the team, and records the experiment: trajectories and traffic
 // from the team topics, planning rounds from the planners' statuses, and completeness from
 // periodic map snapshots of every robot's mapping service. When the mission is over it
-// writes the results folder and stops (its process exit ends a launched team).
+// writes the results folder and stops (its process exit ends a launched team). While the
+// mission runs it keeps a checkpoint of the record in the results folder
+// (evaluation/record_checkpoint.h); a station restarted mid-mission resumes it.
 
 #include <map>
 #include <memory>
@@ -20,6 +22,7 @@
 #include "common/evaluation/team_recorder.h"
 #include "services/station/station_progress.h"
 #include "hexplore/v1/mission.pb.h"
+#include "hexplore/v1/station.pb.h"
 
 namespace hexplore::station_service {
 
@@ -83,6 +86,13 @@ class StationService : public service::Service {
   void publish_mission(const v1::MissionCommand& command);
   void update_progress();  // progress_ from the recorder, and the progress line when due
   void finish(const std::string& reason);
+  // A checkpoint in the results folder left by a station that stopped mid-mission: kept to
+  // resume from once the team is heard (resumable_), unless it is of another team or broken.
+  void find_checkpoint();
+  // Resumes the record from resumable_ when the team's clock is past it (true), else drops it:
+  // it was left by an earlier mission.
+  bool resume_from_checkpoint();
+  void save_checkpoint();
 
   service::ServiceContext* context_ = nullptr;
   StationOptions options_;
@@ -102,6 +112,10 @@ class StationService : public service::Service {
   bool record_complete_ = false;  // the record is complete
   std::string end_reason_;
   int64_t start_wall_ns_ = 0;
+  double wall_before_resume_s_ = 0.0;  // wall time of the mission before this station resumed it
+  std::string checkpoint_path_;         // "" in lockstep: station and team are one process there
+  std::optional<v1::StationCheckpoint> resumable_;
+  metrics::Counter* checkpoint_errors_ = nullptr;
   mutable std::mutex progress_mutex_;
   StationProgress progress_;  // guarded by progress_mutex_
 };

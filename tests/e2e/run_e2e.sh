@@ -10,6 +10,9 @@
 # voxel of its last periodic save, its completeness must come back, the teammate must replace
 # the restarted hlmap's contribution, and the team must still end the mission with every map
 # increment applied),
+# station (the team launched without its station, which the script runs itself, kills with
+# SIGKILL mid-run and starts again: the restarted station must resume the record from its
+# checkpoint, and the results must cover the whole mission and say it restarted once),
 # loss (lockstep through the launcher, every receiver missing 30 % of the team's messages on
 # every topic, E2E_LOSS: the mission must still end, and the map gaps must be repaired),
 # lockstep (the one-process fast mode through the launcher, then the same seed again through
@@ -96,11 +99,23 @@ child_args="--results $work/results --log-level debug --real-time-factor ${E2E_R
 [ "$case" = restart ] && child_args+=" --map-file $work/maps/{robot}.map --save-period-s 5" && mkdir -p "$work/maps"
 # The kill case reads the survivor's planning rounds (one JSON line each).
 [ "$case" = kill ] && child_args+=" --trace-dir $work/traces"
-"$launch" "${mode[@]}" --config "$work/team.yaml" --log-dir "$work/logs" --child-args "$child_args" > "$work/launch.log" 2>&1 &
+# The station case runs the station itself (its output, progress lines included, in station.log).
+services=()
+progress_log=$work/launch.log
+[ "$case" = station ] && services=(--services sim,mapping,hlmap,planning,safety) && progress_log=$work/station.log
+"$launch" "${mode[@]}" "${services[@]}" --config "$work/team.yaml" --log-dir "$work/logs" --child-args "$child_args" \
+  > "$work/launch.log" 2>&1 &
 launcher=$!
 restarted=
 cleanup() { kill "$launcher" $restarted 2>/dev/null || true; }
 trap cleanup EXIT
+station_pid=
+start_station() {
+  # shellcheck disable=SC2086
+  "$station" --config "$work/team.yaml" $child_args >> "$work/station.log" 2>&1 &
+  station_pid=$!
+  restarted+=" $!"
+}
 
 # restart_service SERVICE SIGNAL: stops mr1000a's SERVICE (TERM as a supervisor would, KILL as
 # a crash) and starts the same executable again with the options the launcher gave it; its
@@ -119,7 +134,7 @@ restart_service() {
 }
 
 # Sim time of the station's latest progress line (0 before the first one).
-sim_time() { { grep -o 't= *[0-9.]*s' "$work/launch.log" || true; } | tail -n 1 | tr -dc '0-9.' ; }
+sim_time() { { grep -o 't= *[0-9.]*s' "$progress_log" || true; } | tail -n 1 | tr -dc '0-9.' ; }
 wait_sim_time() {
   local target=$1
   for _ in $(seq 1 600); do
@@ -157,6 +172,20 @@ case $case in
     wait_sim_time 45
     restart_service hlmap TERM
     echo "stopped mr1000a's hlmap at t=$(sim_time)s, and restarted it"
+    ;;
+  station)
+    start_station
+    wait_sim_time 25
+    stopped_at=$(sim_time)
+    kill -KILL "$station_pid"
+    wait "$station_pid" 2>/dev/null || true
+    [ -s "$work/results/station_checkpoint.pb" ] || fail "the station left no checkpoint of its record"
+    sleep 3  # the team explores on without a station
+    start_station
+    echo "killed the station at t=${stopped_at}s and started it again"
+    # The launcher has no station to end it: the team stops when the restarted station is done.
+    wait "$station_pid" || fail "the restarted station failed (station.log)"
+    kill -TERM "$launcher"
     ;;
   *) fail "unknown case" ;;
 esac
@@ -223,6 +252,34 @@ for robot, r in robots.items():
         check(behind is not None and behind <= 1, f"{robot} applied {source}'s increments: {behind} behind at the end")
 restarts = robots["slugcat1"]["map_sync"]["peer_restarts"]
 check(restarts == 1, f"slugcat1 saw mr1000a's hlmap restart {restarts:.0f} time(s) and replaced its contribution")
+sys.exit(0 if ok else 1)
+PY
+    ;;
+  station)
+    grep -q "resumed the mission record" "$work/station.log" || fail "the restarted station did not resume the record"
+    [ ! -e "$work/results/station_checkpoint.pb" ] || fail "the checkpoint outlived the finished mission"
+    python3 - "$work/results" "$stopped_at" <<'PY' || fail "see above"
+import csv, json, sys
+results, stopped_at = sys.argv[1], float(sys.argv[2])
+ok = True
+def check(condition, message):
+    global ok
+    print(("ok   " if condition else "FAIL ") + message)
+    ok &= condition
+summary = json.load(open(results + "/summary.json"))
+station = summary["station"]
+check(station["restarts"] == 1, f"the record says the station restarted {station['restarts']} time(s)")
+# The checkpoint is at most one snapshot period (10 s) old, then 3 s down and the restart.
+check(0 < station["unrecorded_s"] < 30, f"{station['unrecorded_s']:.1f} s of the mission unrecorded (0-30 s)")
+# The record spans the mission: samples and trajectories from its start, on the same clock.
+times = [float(r["sim_time_s"]) for r in csv.DictReader(open(results + "/completeness.csv"))]
+before = [t for t in times if t <= stopped_at]
+check(len(before) >= 2 and times[-1] > stopped_at + 10,
+      f"completeness sampled {len(before)} times before the kill and on to {times[-1]:.0f} s")
+starts = {}
+for r in csv.DictReader(open(results + "/trajectories.csv")):
+    starts.setdefault(r["robot"], float(r["sim_time_s"]))
+check(len(starts) == 2 and max(starts.values()) < 2.0, f"trajectories from the mission start: {starts}")
 sys.exit(0 if ok else 1)
 PY
     ;;
