@@ -29,7 +29,9 @@ const std::vector<std::pair<std::string, std::string>>& sync_counters() {
                                                                      {"gaps_repaired", "hlmap.gaps_repaired"},
                                                                      {"repair_requests", "hlmap.repair_requests"},
                                                                      {"snapshots_applied", "hlmap.snapshots_applied"},
-                                                                     {"peer_restarts", "hlmap.peer_restarts"}};
+                                                                     {"peer_restarts", "hlmap.peer_restarts"},
+                                                                     {"digests_checked", "hlmap.digests_checked"},
+                                                                     {"digest_mismatches", "hlmap.digest_mismatches"}};
   return k;
 }
 const std::vector<std::pair<std::string, std::string>>& radio_counters() {
@@ -97,6 +99,20 @@ std::string robot_communication_json(const ExperimentRecord& r, const std::strin
     if (source == robot) continue;
     const double behind = r.increments_behind(robot, source);
     j << (first ? "" : ", ") << "\"" << source << "\": " << (behind < 0 ? "null" : number(behind));
+    first = false;
+  }
+  // When each teammate's contribution, as held here, differed from what it sent: how often,
+  // the longest stretch, and when the last one ended (null: never / still open at the end).
+  j << "}, \"out_of_sync\": {";
+  first = true;
+  for (const auto& [source, stretches] : it->second.unsynced) {
+    double longest = 0.0;
+    for (const auto& [from, to] : stretches) longest = std::max(longest, (to < 0 ? r.exploration_time_s : to) - from);
+    const bool open = !stretches.empty() && stretches.back().second < 0;
+    j << (first ? "" : ", ") << "\"" << source << "\": {\"stretches\": " << stretches.size()
+      << ", \"longest_s\": " << number(longest) << ", \"last_resynced_s\": "
+      << (stretches.empty() || open ? "null" : number(stretches.back().second))
+      << ", \"open_at_end\": " << (open ? "true" : "false") << "}";
     first = false;
   }
   j << "}}, \"radio_drops\": {";

@@ -36,6 +36,10 @@ struct RobotTrack {
   // latest increment, and how far it has applied each teammate's (-1 / absent: not heard).
   double own_increment_seq = -1.0;
   std::map<std::string, double> synced_seq;
+  // Stretches of mission time this robot's hlmap did not hold what a teammate last sent (its
+  // status in_sync.<teammate> = 0: a gap, a wanted snapshot, a digest that differed), per
+  // teammate, as [from, to] seconds; to < 0 while it lasts.
+  std::map<std::string, std::vector<std::pair<double, double>>> unsynced;
 
   // Sum of the counters named `value` over every service ("radio_lost").
   double counter_sum(const std::string& value) const;

@@ -65,6 +65,14 @@ v1::StationCheckpoint TeamRecorder::checkpoint() const {
     copy_map(track.counters, out->mutable_counters());
     out->set_own_increment_seq(track.own_increment_seq);
     copy_map(track.synced_seq, out->mutable_synced_seq());
+    for (const auto& [peer, stretches] : track.unsynced) {
+      auto* kept = out->add_unsynced();
+      kept->set_peer(peer);
+      for (const auto& [from, to] : stretches) {
+        kept->add_from_to_s(from);
+        kept->add_from_to_s(to);
+      }
+    }
     out->set_longest_blocked_s(track.longest_blocked_s);
     out->set_blocked_since_s(track.blocked_since_s);
     if (auto it = record_.planning_times_s.find(id); it != record_.planning_times_s.end())
@@ -132,6 +140,11 @@ void TeamRecorder::resume(const v1::StationCheckpoint& c, double now_sim_time_s)
     track.counters = to_std_map(in.counters());
     track.own_increment_seq = in.own_increment_seq();
     track.synced_seq = to_std_map(in.synced_seq());
+    track.unsynced.clear();
+    for (const auto& kept : in.unsynced()) {
+      auto& stretches = track.unsynced[kept.peer()];
+      for (int i = 0; i + 1 < kept.from_to_s_size(); i += 2) stretches.emplace_back(kept.from_to_s(i), kept.from_to_s(i + 1));
+    }
     track.longest_blocked_s = in.longest_blocked_s();
     // The stretch a robot was BLOCKED in when the station went down is not known to go on.
     track.blocked_since_s = -1.0;

@@ -22,6 +22,7 @@ const std::vector<std::string>& status_counters() {
   static const std::vector<std::string> kCounters = {
       "sim.odometry_m",          "sim.collisions",          "hlmap.gaps_detected",   "hlmap.gaps_repaired",
       "hlmap.repair_requests",   "hlmap.snapshots_applied", "hlmap.peer_restarts",   "hlmap.full_map_bytes",
+      "hlmap.digests_checked",   "hlmap.digest_mismatches",
       "mapping.raw_map_bytes",
       "*.radio_expired",         "*.radio_lost",            "*.radio_out_of_range"};
   return kCounters;
@@ -52,6 +53,7 @@ void TeamRecorder::start(double sim_time_s) {
     track.length_m = 0.0;
     track.longest_blocked_s = 0.0;
     track.blocked_since_s = -1.0;
+    track.unsynced.clear();
   }
   chord_length_m_.clear();
   for (auto& [robot, counters] : counters_)
@@ -142,8 +144,19 @@ void TeamRecorder::on_status(const std::string& robot, std::string_view service,
 
 bool TeamRecorder::record_map_sync(RobotTrack& track, const std::string& name, double value) {
   static const std::string kSynced = "synced_seq.";
+  static const std::string kInSync = "in_sync.";
   if (name == "own_increment_seq") {
     track.own_increment_seq = value;
+    return true;
+  }
+  if (name.rfind(kInSync, 0) == 0) {
+    const std::string source = name.substr(kInSync.size());
+    if (!start_s_ || !record_.robots.contains(source)) return true;
+    auto& stretches = track.unsynced[source];
+    const bool open = !stretches.empty() && stretches.back().second < 0;
+    const double t = mission_time_s();
+    if (value == 0.0 && !open) stretches.emplace_back(t, -1.0);
+    if (value != 0.0 && open) stretches.back().second = t;
     return true;
   }
   if (name.rfind(kSynced, 0) != 0) return false;

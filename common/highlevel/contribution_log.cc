@@ -63,6 +63,7 @@ SourcedUpdate ContributionLog::take_increment() {
   }
   pending_keys_.clear();
   pending_edges_.clear();
+  inc.digest = published_.digest();
   return inc;
 }
 
@@ -72,6 +73,7 @@ SourcedUpdate ContributionLog::snapshot() const {
   snap.seq = seq_;
   snap.incarnation = incarnation_;
   snap.update = published_.snapshot();
+  snap.digest = published_.digest();
   return snap;
 }
 

@@ -25,6 +25,9 @@ struct SourcedUpdate {
   uint64_t seq = 0;
   MapUpdate update;
   uint64_t incarnation = 0;
+  // The source's Contribution::digest() after this update (0: not given): what a receiver's
+  // copy must equal once it applied it.
+  uint32_t digest = 0;
 };
 
 // A published supervoxel is re-sent when a discrete attribute (coverage, traversal

@@ -2,7 +2,32 @@
 
 #include <algorithm>
 
+#include "common/core/rng.h"
+#include "common/highlevel/wire_precision.h"
+
 namespace hexplore::highlevel {
+namespace {
+
+// Folds `value` into a running per-element hash.
+uint64_t fold(uint64_t hash, uint64_t value) { return core::splitmix_finalize(hash ^ (value + 0x9E3779B97F4A7C15ull)); }
+
+// What a supervoxel is on the wire (map_proto.cc): a receiver decodes the same values.
+uint64_t wire_hash(const Supervoxel& s) {
+  uint64_t h = fold(0x5eed, s.key);
+  for (int i = 0; i < 3; ++i) h = fold(h, static_cast<uint64_t>(centre_steps(s.center[i])));
+  const PackedNormal n = pack_normal(s.normal);
+  h = fold(h, (static_cast<uint64_t>(static_cast<uint8_t>(n.u)) << 8) | static_cast<uint8_t>(n.v));
+  h = fold(h, (s.covered ? 1u : 0u) | (static_cast<uint64_t>(std::max(0, s.traversal_requirement)) << 1));
+  h = fold(h, static_cast<uint64_t>(s.surface));
+  h = fold(h, static_cast<uint64_t>(std::max(0, s.voxel_count)));
+  if (!s.covered) {  // covered ones travel without these (the receiver fills them in)
+    h = fold(h, static_cast<uint64_t>(std::max(0, s.covered_voxels)));
+    h = fold(h, static_cast<uint64_t>(s.gap));
+  }
+  return h;
+}
+
+}  // namespace
 
 void Contribution::apply(const MapUpdate& update, std::unordered_set<uint64_t>* touched_keys,
                          std::unordered_set<EdgeKey, EdgeKeyHash>* touched_edges) {
@@ -40,6 +65,15 @@ MapUpdate Contribution::snapshot() const {
   u.edge_upserts.assign(edges.begin(), edges.end());
   std::sort(u.edge_upserts.begin(), u.edge_upserts.end());
   return u;
+}
+
+uint32_t Contribution::digest() const {
+  // A sum of element hashes: the containers' order does not matter.
+  uint64_t sum = supervoxels.size() * 0x2545F4914F6CDD1Dull + edges.size();
+  for (const auto& [key, sv] : supervoxels) sum += wire_hash(sv);
+  for (const EdgeKey& e : edges) sum += fold(fold(0xed9e, e.a), e.b);
+  const uint32_t folded = static_cast<uint32_t>(core::splitmix_finalize(sum) >> 32);
+  return folded == 0 ? 1 : folded;  // 0 means "not given" on the wire
 }
 
 Supervoxel fuse(const std::vector<const Supervoxel*>& reports) {

@@ -28,6 +28,10 @@ struct Contribution {
              std::unordered_set<EdgeKey, EdgeKeyHash>* touched_edges = nullptr);
   // The whole contribution as one full-snapshot update (keys ascending).
   MapUpdate snapshot() const;
+  // A 32-bit digest of what travels on the radio of this contribution (keys, centres on the
+  // wire grid, packed normals, the attributes map_proto sends, edges), independent of order:
+  // equal on the source and on every receiver that applied the same increments. Never 0.
+  uint32_t digest() const;
 };
 
 // Fuses supervoxels reported by several sources (iterated in source-name order so that

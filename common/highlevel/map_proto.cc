@@ -137,6 +137,7 @@ v1::MapIncrement to_increment(const SourcedUpdate& inc, const Contribution& curr
   m.set_source_robot(inc.source);
   m.set_increment_seq(inc.seq);
   m.set_incarnation(inc.incarnation);
+  m.set_contribution_digest(inc.digest);
   fill_message(inc.update, current, &m);
   return m;
 }
@@ -146,6 +147,7 @@ v1::MapSnapshot to_snapshot(const SourcedUpdate& snap, const Contribution& curre
   m.set_source_robot(snap.source);
   m.set_upto_seq(snap.seq);
   m.set_incarnation(snap.incarnation);
+  m.set_contribution_digest(snap.digest);
   fill_message(snap.update, current, &m);
   return m;
 }
@@ -155,6 +157,7 @@ SourcedUpdate from_proto(const v1::MapIncrement& inc) {
   u.source = inc.source_robot();
   u.seq = inc.increment_seq();
   u.incarnation = inc.incarnation();
+  u.digest = inc.contribution_digest();
   fill_update(inc, &u.update);
   return u;
 }
@@ -164,6 +167,7 @@ SourcedUpdate from_proto(const v1::MapSnapshot& snap) {
   u.source = snap.source_robot();
   u.seq = snap.upto_seq();
   u.incarnation = snap.incarnation();
+  u.digest = snap.contribution_digest();
   u.update.full_snapshot = true;
   fill_update(snap, &u.update);
   return u;

@@ -163,12 +163,14 @@ void MapCodec::encode(const google::protobuf::MessageLite& message, const transp
     write_robot(w, roster, m.source_robot());
     w.varint(m.upto_seq());
     w.varint(m.incarnation());
+    w.u32(m.contribution_digest());
     encode_fields({m.supervoxels(), m.edges()}, eta_s_m_, w);
   } else {
     const auto& m = static_cast<const v1::MapIncrement&>(message);
     write_robot(w, roster, m.source_robot());
     w.varint(m.increment_seq());
     w.varint(m.incarnation());
+    w.u32(m.contribution_digest());
     encode_fields({m.supervoxels(), m.edges()}, eta_s_m_, w);
   }
 }
@@ -180,17 +182,20 @@ bool MapCodec::decode(std::string_view data, const transport::Roster* roster,
   if (!read_robot(r, roster, source)) return false;
   const uint64_t seq = r.varint();
   const uint64_t incarnation = r.varint();
+  const uint32_t digest = r.u32();
   if (snapshot_) {
     auto& m = static_cast<v1::MapSnapshot&>(message);
     m.set_source_robot(source);
     m.set_upto_seq(seq);
     m.set_incarnation(incarnation);
+    m.set_contribution_digest(digest);
     return decode_fields(r, eta_s_m_, {m.mutable_supervoxels(), m.mutable_edges()});
   }
   auto& m = static_cast<v1::MapIncrement&>(message);
   m.set_source_robot(source);
   m.set_increment_seq(seq);
   m.set_incarnation(incarnation);
+  m.set_contribution_digest(digest);
   return decode_fields(r, eta_s_m_, {m.mutable_supervoxels(), m.mutable_edges()});
 }
 

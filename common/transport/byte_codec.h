@@ -24,6 +24,9 @@ class ByteWriter {
     u8(static_cast<uint8_t>(v));
     u8(static_cast<uint8_t>(v >> 8));
   }
+  void u32(uint32_t v) {
+    for (int i = 0; i < 4; ++i) u8(static_cast<uint8_t>(v >> (8 * i)));
+  }
   void f32(float v) {
     uint32_t bits;
     std::memcpy(&bits, &v, 4);
@@ -61,6 +64,11 @@ class ByteReader {
   uint16_t u16() {
     const uint16_t lo = u8();
     return static_cast<uint16_t>(lo | (static_cast<uint16_t>(u8()) << 8));
+  }
+  uint32_t u32() {
+    uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(u8()) << (8 * i);
+    return v;
   }
   float f32() {
     uint32_t bits = 0;

@@ -88,6 +88,8 @@ void HlmapService::setup(service::ServiceContext& context) {
   metrics_.repair_requests = counter("hexplore_hlmap_repair_requests_total", "MapRepairRequests sent to peers");
   metrics_.peer_restarts = counter("hexplore_hlmap_peer_restarts_total", "Peers' hlmaps seen restarted (contribution replaced)");
   metrics_.stale_updates = counter("hexplore_hlmap_stale_updates_total", "Peers' updates from before their hlmap restarted, dropped");
+  metrics_.digest_mismatches = counter("hexplore_hlmap_digest_mismatches_total",
+                                       "Peers' contributions that differed here from the digest they sent (a snapshot is fetched)");
   metrics_.snapshots_served = counter("hexplore_hlmap_snapshots_served_total", "MapSnapshots served to peers");
   metrics_.bad_deltas = counter("hexplore_hlmap_bad_voxel_deltas_total", "Voxel deltas dropped (wrong resolution)");
   metrics_.malformed_voxels = counter("hexplore_hlmap_malformed_voxels_total",
@@ -157,11 +159,14 @@ void HlmapService::on_voxels(const v1::VoxelDelta& delta) {
 }
 
 void HlmapService::apply_ready(std::vector<highlevel::SourcedUpdate> ready) {
+  std::map<std::string, const highlevel::SourcedUpdate*> last_with_digest;  // per source
   for (const auto& u : ready) {
     const Stopwatch watch;
     fusion_->apply(u.source, u.update);
     metrics_.fusion_s->observe(watch.seconds());
+    if (u.digest != 0) last_with_digest[u.source] = &u;
   }
+  for (const auto& [source, update] : last_with_digest) verify_digest(*update);
   const auto& stats = sync_->stats();
   metrics_.gaps_detected->increment(static_cast<double>(stats.gaps_detected - reported_.gaps_detected));
   metrics_.gaps_repaired->increment(static_cast<double>(stats.gaps_repaired - reported_.gaps_repaired));
@@ -170,6 +175,33 @@ void HlmapService::apply_ready(std::vector<highlevel::SourcedUpdate> ready) {
   metrics_.stale_updates->increment(static_cast<double>(stats.stale - reported_.stale));
   reported_ = stats;
 }
+
+void HlmapService::verify_digest(const highlevel::SourcedUpdate& update) {
+  const highlevel::Contribution* copy = fusion_->contribution(update.source);
+  ++digests_checked_;
+  if (copy != nullptr && copy->digest() == update.digest) {
+    diverged_.erase(update.source);
+    return;
+  }
+  ++digest_mismatches_;
+  metrics_.digest_mismatches->increment();
+  diverged_.insert(update.source);
+  const std::string peer(transport::topics::peer_label(update.source));
+  if (update.update.full_snapshot) {
+    // Even the whole contribution differs here (supervoxels dropped as malformed): asking
+    // again would bring the same; the next increment is compared again.
+    core::log_once(core::LogLevel::kWarn, "hlmap", "digest-snapshot/" + peer,
+                   robot_id_ + ": '" + update.source + "''s snapshot differs from its digest; not asked again (logged once)");
+    return;
+  }
+  core::log_once(core::LogLevel::kWarn, "hlmap", "digest/" + peer,
+                 robot_id_ + ": '" + update.source + "''s contribution differs here from its digest at increment " +
+                     std::to_string(update.seq) + "; fetching a snapshot (counted in "
+                     "hexplore_hlmap_digest_mismatches_total, logged once)");
+  sync_->want_snapshot(update.source);
+}
+
+bool HlmapService::in_sync(const std::string& peer) const { return sync_->in_sync(peer) && !diverged_.contains(peer); }
 
 void HlmapService::on_increment(const v1::MapIncrement& increment) {
   highlevel::SourcedUpdate update = highlevel::from_proto(increment);
@@ -198,10 +230,10 @@ v1::MapSnapshot HlmapService::serve_repair(const v1::MapRepairRequest& request) 
     // any gap and needs no history of past increments.
     reply = highlevel::to_snapshot(log_->snapshot(), log_->contribution());
   } else if (const auto* c = fusion_->contribution(request.source_robot());
-             c != nullptr && sync_->in_sync(request.source_robot())) {
+             c != nullptr && in_sync(request.source_robot())) {
     // Relay a teammate's contribution we hold completely (helps when the source is out of reach).
     highlevel::SourcedUpdate relay{request.source_robot(), sync_->applied_seq(request.source_robot()), c->snapshot(),
-                                   sync_->incarnation(request.source_robot())};
+                                   sync_->incarnation(request.source_robot()), c->digest()};
     reply = highlevel::to_snapshot(relay, *c);
   }
   metrics_.snapshots_served->increment();
@@ -294,6 +326,11 @@ void HlmapService::fill_status(v1::ServiceStatus& status) {
   // How far this robot has applied each teammate's increments: against the teammate's own
   // own_increment_seq it says whether the maps converged (after a partition, a restart).
   for (const auto& peer : peers_) add("synced_seq." + peer, static_cast<double>(sync_->applied_seq(peer)));
+  // 1 while this robot holds exactly what each teammate last sent (sequence and digest): how
+  // long it was 0 after a partition or a restart is the time the maps took to converge.
+  for (const auto& peer : peers_) add("in_sync." + peer, in_sync(peer) ? 1.0 : 0.0);
+  add("digests_checked", digests_checked_);
+  add("digest_mismatches", digest_mismatches_);
   add("gaps_detected", static_cast<double>(sync_->stats().gaps_detected));
   add("gaps_repaired", static_cast<double>(sync_->stats().gaps_repaired));
   add("repair_requests", static_cast<double>(sync_->stats().repair_requests));

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,11 @@ class HlmapService : public service::Service {
   // Counts and logs (once per teammate) the supervoxels from_proto left out as malformed.
   void count_malformed(const highlevel::SourcedUpdate& update);
   void apply_ready(std::vector<highlevel::SourcedUpdate> ready);
+  // Compares this robot's copy of `update.source`'s contribution with the digest the source
+  // sent (update.digest) and asks for a snapshot when they differ.
+  void verify_digest(const highlevel::SourcedUpdate& update);
+  // Known, no gap, no snapshot wanted, and the last digest compared was equal.
+  bool in_sync(const std::string& peer) const;
   v1::MapSnapshot serve_repair(const v1::MapRepairRequest& request);
   v1::FusedMapUpdate serve_fused(const v1::FusedMapRequest& request);
   void window();
@@ -75,6 +81,7 @@ class HlmapService : public service::Service {
     metrics::Counter* repair_requests = nullptr;
     metrics::Counter* peer_restarts = nullptr;
     metrics::Counter* stale_updates = nullptr;
+    metrics::Counter* digest_mismatches = nullptr;
     metrics::Counter* snapshots_served = nullptr;
     metrics::Counter* bad_deltas = nullptr;
     metrics::Counter* malformed_voxels = nullptr;
@@ -82,6 +89,10 @@ class HlmapService : public service::Service {
     metrics::Counter* full_map_bytes = nullptr;
   } metrics_;
   highlevel::PeerSyncStats reported_;  // sync stats already added to the counters
+  // Peers whose contribution, as applied here, differed from the digest they sent with it.
+  std::set<std::string> diverged_;
+  double digests_checked_ = 0.0;
+  double digest_mismatches_ = 0.0;
 };
 
 }  // namespace hexplore::hlmap_service

@@ -41,7 +41,8 @@ void hear_second(TeamRecorder& r, int t) {
   r.on_team_message("a", "team/map", 100 + t);
   r.on_team_message("b", "team/plan", 30);
   r.on_status("a", "sim", status({{"odometry_m", 50.0 + t}, {"collisions", 1.0 + (t >= 15 ? 1 : 0)}}));
-  r.on_status("b", "hlmap", status({{"gaps_detected", 3.0 + t / 5}, {"own_increment_seq", 10.0 + t}}));
+  r.on_status("b", "hlmap", status({{"gaps_detected", 3.0 + t / 5}, {"own_increment_seq", 10.0 + t},
+                                    {"in_sync.a", t >= 3 && t <= 12 ? 0.0 : 1.0}}));
   r.on_planning_status("a", status({{"round", double(t / 2)}, {"planning_time_s", 0.01 * t}, {"views_remaining", 5}}));
   if (t % 5 == 0) r.on_completeness({double(t), 0.02 * t, 0.03 * t, {{"a", 0.01 * t}, {"b", 0.015 * t}}});
 }
@@ -101,6 +102,10 @@ TEST_F(RecordCheckpoint, AResumedRecorderGoesOnAsIfTheStationHadOnlyMissedItsDow
     EXPECT_EQ(g.times_s.size(), g.positions_m.size());
     EXPECT_EQ(g.orientations.size(), g.positions_m.size());
   }
+  // b's map was out of sync with a's from 3 s on: the uninterrupted station heard it end at
+  // 13 s, the restarted one at 14 s, its first status.
+  EXPECT_EQ(want.robots.at("b").unsynced.at("a"), (std::vector<std::pair<double, double>>{{3.0, 13.0}}));
+  EXPECT_EQ(got.robots.at("b").unsynced.at("a"), (std::vector<std::pair<double, double>>{{3.0, 14.0}}));
   EXPECT_DOUBLE_EQ(got.robots.at("a").length_m, 20.0);
   EXPECT_EQ(got.robots.at("a").collisions, 2u);
   EXPECT_DOUBLE_EQ(got.robots.at("b").counter("hlmap.gaps_detected"), 4.0);

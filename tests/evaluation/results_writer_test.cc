@@ -50,6 +50,7 @@ ExperimentRecord sample_record(uint64_t seed, double time_s, double final_comple
   r.robots["a"].own_increment_seq = 9;
   r.robots["b"].own_increment_seq = 4;
   r.robots["b"].synced_seq = {{"a", 7}};
+  r.robots["b"].unsynced = {{"a", {{10.0, 12.0}, {50.0, -1.0}}}};  // out of sync from 50 s to the end
   r.planning_times_s["a"] = {0.05, 0.07};
   r.final_map_points_m = {{0, 0, 0}, {5, 5, 3}, {9, 1, 1}};
   // An earlier periodic report of "a" (left out of the summary's counts), then the final ones.
@@ -96,8 +97,12 @@ TEST(ResultsWriter, WritesEveryFile) {
   EXPECT_NE(strategies.find("full_perception,3000,30\n"), std::string::npos) << strategies;
   EXPECT_NE(summary.find("\"saving_vs_full_high_level\": 0.9833333333"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"map_sync\": {\"gaps_detected\": 3, \"gaps_repaired\": 2"), std::string::npos) << summary;
-  EXPECT_NE(summary.find("\"increments_behind\": {\"a\": 2}}"), std::string::npos) << summary;
-  EXPECT_NE(summary.find("\"increments_behind\": {\"b\": null}}"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"increments_behind\": {\"a\": 2}, \"out_of_sync\": {\"a\": {\"stretches\": 2, "
+                         "\"longest_s\": 50, \"last_resynced_s\": null, \"open_at_end\": true}}}"),
+            std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("\"increments_behind\": {\"b\": null}, \"out_of_sync\": {}}"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"station\": {\"restarts\": 0, \"unrecorded_s\": 0}"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"radio_drops\": {\"expired\": 0, \"lost\": 0, \"out_of_range\": 45}"), std::string::npos)
       << summary;
   // TUM: "time x y z qx qy qz qw", one line per sample (no orientation recorded: identity).

@@ -143,6 +143,22 @@ TEST(TeamRecorder, MapConvergenceIsTheLatestSequencesHeard) {
   EXPECT_FALSE(record.robots.at("a").counters.contains("hlmap.own_increment_seq"));
 }
 
+TEST(TeamRecorder, OutOfSyncStretchesFollowTheHlmapsStatus) {
+  const auto t = team();
+  TeamRecorder r(t);
+  r.on_status("a", "hlmap", status({{"in_sync.b", 0}}));  // before the start: not recorded
+  r.start(0.0);
+  const double in_sync[] = {1, 1, 0, 0, 0, 1, 1, 0};  // one status per second
+  for (int i = 0; i < 8; ++i) {
+    r.on_pose("a", i, pose_at(0, 0, 0));
+    r.on_status("a", "hlmap", status({{"in_sync.b", in_sync[i]}, {"in_sync.ghost", 0}}));
+  }
+  const auto& unsynced = r.record().robots.at("a").unsynced;
+  ASSERT_EQ(unsynced.size(), 1u);  // not the ghost: not a robot of the team
+  const std::vector<std::pair<double, double>> want = {{2.0, 5.0}, {7.0, -1.0}};
+  EXPECT_EQ(unsynced.at("b"), want);
+}
+
 TEST(TeamRecorder, LongestBlockedStretchPerRobot) {
   // Blocked 2 s, moving, blocked 5 s (to the end): 5 s; a robot never blocked: 0.
   const auto t = team();

@@ -3,6 +3,7 @@
 // the same supervoxels, bit for bit; edges and removals survive; malformed frames are refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "common/highlevel/map_proto.h"
@@ -114,6 +115,46 @@ TEST(MapCodec, SnapshotsRoundTripToo) {
   EXPECT_EQ(back.update.edge_upserts, snap.update.edge_upserts);
 }
 
+TEST(MapCodec, AReceiversCopyHasTheDigestTheSourceSent) {
+  const MapCodec codec(false, kEtaS);
+  const auto roster = testing::roster();
+  highlevel::SourcedUpdate inc = increment(4);
+  const highlevel::Contribution source = contribution_of(inc);
+  inc.digest = source.digest();
+  v1::MapIncrement decoded;
+  ASSERT_TRUE(decode(codec, encode(codec, highlevel::to_increment(inc, source), &roster), &roster, decoded));
+  const highlevel::SourcedUpdate back = highlevel::from_proto(decoded);
+  EXPECT_EQ(back.digest, inc.digest);
+  highlevel::Contribution copy;
+  copy.apply(back.update);
+  EXPECT_EQ(copy.digest(), back.digest);
+}
+
+TEST(MapCodec, TheDigestSeesEveryDifferenceThatTravelsAndNoOrder) {
+  const highlevel::SourcedUpdate inc = increment(5);
+  const highlevel::Contribution c = contribution_of(inc);
+  highlevel::SourcedUpdate reversed = inc;
+  std::reverse(reversed.update.upserts.begin(), reversed.update.upserts.end());
+  std::reverse(reversed.update.edge_upserts.begin(), reversed.update.edge_upserts.end());
+  EXPECT_EQ(contribution_of(reversed).digest(), c.digest());
+  EXPECT_NE(c.digest(), 0u);
+  EXPECT_NE(highlevel::Contribution{}.digest(), 0u);  // 0 means "no digest" on the wire
+  auto changed = [&](auto&& change) {
+    highlevel::Contribution other = c;
+    change(other);
+    return other.digest() != c.digest();
+  };
+  const uint64_t incomplete = std::find_if(inc.update.upserts.begin(), inc.update.upserts.end(),
+                                           [](const auto& s) { return !s.covered; })->key;
+  EXPECT_TRUE(changed([](auto& o) { o.supervoxels.erase(o.supervoxels.begin()); }));
+  EXPECT_TRUE(changed([](auto& o) { o.edges.erase(o.edges.begin()); }));
+  EXPECT_TRUE(changed([&](auto& o) { o.supervoxels[incomplete].covered_voxels += 1; }));
+  EXPECT_TRUE(changed([&](auto& o) { o.supervoxels[incomplete].center.x() += 1.0 / 64; }));
+  EXPECT_TRUE(changed([&](auto& o) { o.supervoxels[incomplete].covered = true; }));
+  // Below the wire's precision, nothing changed.
+  EXPECT_FALSE(changed([&](auto& o) { o.supervoxels[incomplete].center.x() += 1e-6; }));
+}
+
 TEST(MapCodec, AnEmptyIncrementIsAFewBytes) {
   const MapCodec codec(false, kEtaS);
   const auto roster = testing::roster();
@@ -121,12 +162,14 @@ TEST(MapCodec, AnEmptyIncrementIsAFewBytes) {
   heartbeat.set_source_robot("slugcat1");
   heartbeat.set_increment_seq(300);
   heartbeat.set_incarnation(1'796'000'000'000);  // ms since the epoch, as hlmap sets it: 6 bytes
+  heartbeat.set_contribution_digest(0x9e3779b9);  // 4 bytes
   const std::string wire = encode(codec, heartbeat, &roster);
-  EXPECT_LE(wire.size(), 11u);
+  EXPECT_LE(wire.size(), 15u);
   v1::MapIncrement out;
   ASSERT_TRUE(decode(codec, wire, &roster, out));
   EXPECT_EQ(out.increment_seq(), 300u);
   EXPECT_EQ(out.incarnation(), 1'796'000'000'000u);
+  EXPECT_EQ(out.contribution_digest(), 0x9e3779b9u);
   EXPECT_EQ(out.supervoxels_size(), 0);
 }
 
@@ -138,7 +181,8 @@ TEST(MapCodec, RefusesMalformedInput) {
   testing::survives_malformed<v1::MapIncrement>(codec, wire, &roster);
   v1::MapIncrement out;
   // A count the frame cannot hold is refused before anything is allocated for it.
-  std::string huge("\x02\x01\xff\xff\xff\xff\x0f\x00", 8);
+  // (robot slot, seq, incarnation, digest, then a supervoxel count of 2^32 - 1)
+  std::string huge("\x02\x01\x01\x00\x00\x00\x00\xff\xff\xff\xff\x0f\x00", 13);
   EXPECT_FALSE(decode(codec, huge, &roster, out));
 }
 
