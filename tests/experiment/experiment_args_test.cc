@@ -120,5 +120,15 @@ TEST(ExperimentArgs, TimeLimitOverridesTheTeamFilesAndRejectsNonsense) {
   }
 }
 
+TEST(ExperimentArgs, ASweepIsEmittedOrGathered) {
+  const auto emit = parse({"--config", "t.yaml", "--seeds", "1-2", "--planners", "a,b", "--emit-slurm", "sweep"});
+  EXPECT_EQ(emit.emit_slurm, "sweep");
+  const auto gather = parse({"--gather", "sweep"});
+  EXPECT_EQ(gather.gather, "sweep");
+  // The sweep folder holds the team file and seeds; given again they could disagree with it.
+  EXPECT_THROW(parse({"--gather", "sweep", "--config", "t.yaml"}), std::invalid_argument);
+  EXPECT_THROW(parse({"--gather", "sweep", "--seeds", "1"}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace hexplore::experiment

@@ -106,8 +106,15 @@ ExperimentArgs parse_experiment_args(int argc, char** argv) {
     } else if (flag == "--report-script") a.report_script = value;
     else if (flag == "--robot") a.robots.push_back(value);
     else if (flag == "--log-level") a.log_level = value;
+    else if (flag == "--emit-slurm") a.emit_slurm = value;
+    else if (flag == "--gather") a.gather = value;
     else if (service::is_service_option(flag.substr(2))) a.service_arguments[flag.substr(2)] = value;
     else throw std::invalid_argument(flag + " " + service::unknown_option_message(flag.substr(2)));
+  }
+  if (a.gather) {
+    if (!a.config.empty() || !a.seeds.empty() || a.emit_slurm)
+      throw std::invalid_argument("--gather DIR takes no --config, --seeds or --emit-slurm: the sweep folder has them");
+    return a;
   }
   if (a.config.empty()) throw std::invalid_argument("missing --config TEAM.yaml");
   if (a.seeds.empty()) throw std::invalid_argument("missing --seeds LIST (e.g. 1,2,3 or 1-5)");

@@ -27,6 +27,10 @@ struct ExperimentArgs {
   std::string log_level = "warn";
   std::map<std::string, std::string> service_arguments;  // any other --name value
   bool help = false;                   // --help or -h: print the usage and stop
+  // --emit-slurm DIR: write the runs as a Slurm job array into DIR instead of running them.
+  std::optional<std::string> emit_slurm;
+  // --gather DIR: the comparison of what a sweep's array tasks wrote (needs nothing else).
+  std::optional<std::string> gather;
 };
 
 // Throws std::invalid_argument with a one-line message.

@@ -11,6 +11,9 @@
 // DIR/<planner>/experiment.log), then tools/report/compare_report.py writes DIR/comparison.*
 // and DIR/figures/ (--report-script PATH names another script). Every seeds folder gets its
 // figures from tools/report/run_report.py; --report false skips both.
+// Beyond one machine: --emit-slurm DIR writes the same runs (planners x seeds) as a Slurm job
+// array instead of running them, and --gather DIR writes the comparison of what the array's
+// tasks left (tools/experiment/slurm_sweep.h).
 // Exit: 0 all runs finished, 1 a run failed or was interrupted, 2 bad arguments or team file.
 #include <signal.h>
 #include <sys/wait.h>
@@ -36,6 +39,7 @@
 #include "tools/team/team_services.h"
 #include "tools/experiment/experiment_args.h"
 #include "tools/experiment/progress_line.h"
+#include "tools/experiment/slurm_sweep.h"
 
 namespace hexplore::experiment {
 namespace {
@@ -265,6 +269,43 @@ int run_comparison(const core::TeamConfig& base, const ExperimentArgs& args, con
   return exit_code;
 }
 
+// --emit-slurm: the runs as a job array, nothing run here.
+int emit_slurm(const ExperimentArgs& args) {
+  const std::string script =
+      write_slurm_sweep(args, std::filesystem::read_symlink("/proc/self/exe").string(), *args.emit_slurm);
+  const auto runs = sweep_runs(args);
+  std::printf("[experiment] %zu runs as a Slurm job array: %s (runs.tsv beside it)\n"
+              "[experiment] submit: sbatch %s\n"
+              "[experiment] when every task has ended: hexplore_experiment --gather %s\n",
+              runs.size(), script.c_str(), script.c_str(), std::filesystem::absolute(*args.emit_slurm).c_str());
+  return 0;
+}
+
+// --gather: every run of the sweep must have left its summary; then the figures and the
+// comparison, as --planners writes them on one machine.
+int gather(const ExperimentArgs& args) {
+  const SweepStatus sweep = read_sweep(*args.gather);
+  std::printf("[experiment] %zu of %zu runs of %s have results in %s\n", sweep.done.size(),
+              sweep.done.size() + sweep.missing.size(), args.gather->c_str(), sweep.results_dir.c_str());
+  for (const auto& run : sweep.missing)
+    std::printf("[experiment] missing: planner %s, seed %llu (its task's log is in %s/logs/)\n",
+                run.planner.empty() ? "(team file's)" : run.planner.c_str(), static_cast<unsigned long long>(run.seed),
+                args.gather->c_str());
+  if (sweep.done.empty()) return 1;
+  const bool comparison = !(sweep.planners.size() == 1 && sweep.planners[0].empty());
+  if (comparison) {
+    std::ofstream(std::filesystem::path(sweep.results_dir) / "planners.txt") << join(sweep.planners) << "\n";
+    if (args.report) {
+      for (const auto& planner : sweep.planners)
+        run_report(evaluation::report_script_path("run_report.py"), (std::filesystem::path(sweep.results_dir) / planner).string());
+      run_report(args.report_script.value_or(evaluation::report_script_path("compare_report.py")), sweep.results_dir);
+    }
+  } else if (args.report) {
+    run_report(evaluation::report_script_path("run_report.py"), sweep.results_dir);
+  }
+  return sweep.missing.empty() ? 0 : 1;
+}
+
 int run(int argc, char** argv) {
   sigset_t stop_signals;
   sigemptyset(&stop_signals);
@@ -275,7 +316,8 @@ int run(int argc, char** argv) {
   constexpr const char* kUsage =
       "usage: hexplore_experiment --config TEAM.yaml --seeds 1,2,3|1-5 [--results DIR] "
       "[--planner NAME | --planners A,B,C [--jobs N] [--report true|false] [--report-script PATH]] "
-      "[--time-limit-s S] [--robot ID ...] [--log-level L] [--<service option> <value> ...]\n";
+      "[--time-limit-s S] [--robot ID ...] [--log-level L] [--emit-slurm DIR] [--<service option> <value> ...]\n"
+      "       hexplore_experiment --gather DIR   (the comparison of a sweep's results; DIR as --emit-slurm wrote it)\n";
   ExperimentArgs args;
   core::TeamConfig base;
   try {
@@ -288,18 +330,28 @@ int run(int argc, char** argv) {
     if (!core::parse_log_level(args.log_level, level))
       throw std::invalid_argument("--log-level must be debug, info, warn or error, got '" + args.log_level + "'");
     core::set_log_level(level);
-    const planning::PlannerRegistry registry = planning::PlannerRegistry::builtin();
-    std::vector<std::string> wanted = args.planners;
-    if (args.planner) wanted.push_back(*args.planner);
-    for (const auto& name : wanted)
-      if (!registry.contains(name)) registry.create(name);  // throws, listing the known planners
-    base = core::load_team_config(args.config);
+    if (!args.gather) {  // a sweep folder holds its planners and team file already
+      const planning::PlannerRegistry registry = planning::PlannerRegistry::builtin();
+      std::vector<std::string> wanted = args.planners;
+      if (args.planner) wanted.push_back(*args.planner);
+      for (const auto& name : wanted)
+        if (!registry.contains(name)) registry.create(name);  // throws, listing the known planners
+      base = core::load_team_config(args.config);
+    }
   } catch (const std::invalid_argument& e) {
     std::cerr << "error: " << e.what() << "\n" << kUsage;
     return 2;
   } catch (const core::ConfigError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
+  }
+  if (args.gather || args.emit_slurm) {
+    try {
+      return args.gather ? gather(args) : emit_slurm(args);
+    } catch (const std::exception& e) {  // a sweep folder that cannot be written or read
+      std::cerr << "error: " << e.what() << "\n";
+      return 2;
+    }
   }
   if (!args.planners.empty()) return run_comparison(base, args, stop_signals);
   return run_seeds(base, args, args.results_dir, args.planner, stop_signals);
