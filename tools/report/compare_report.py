@@ -27,7 +27,7 @@ import os
 import sys
 
 CATEGORIES = ["pose", "incremental_map", "executable_path", "exploration_route"]
-OBSERVABLE_LEVELS = [0.5, 0.7, 0.8, 0.9]
+OBSERVABLE_LEVELS = [0.5, 0.7, 0.8, 0.9, 0.95, 0.97]
 
 
 def stats(values):
