@@ -113,7 +113,13 @@ def main(argv):
     ok = False
     try:
         start = time.monotonic()
-        # 1. Watch: every robot, every service, poses both ways, planning rounds, byte rates.
+        # 1. Watch: every robot, every service, poses both ways, planning rounds, byte rates. The
+        # 10 s window opens once every sender is heard: a slow start (a loaded machine, a
+        # sanitizer build) must not eat into it.
+        for _ in range(20):
+            warm = snapshot("--window", "3")
+            if len(warm["senders_heard"]) == warm["senders_expected"] and (warm["mission_time_s"] or 0) > 0:
+                break
         s = snapshot("--window", "10")
         # The team file names transport.curve_keys_dir: the launcher made the keys, and the client
         # watches and commands over CURVE with the station's pair.
