@@ -6,6 +6,7 @@
 #include "common/core/team_config.h"
 #include "common/evaluation/record_checkpoint.h"
 #include "common/evaluation/team_recorder.h"
+#include "tests/evaluation/status_fixture.h"
 #include "common/evaluation/results_writer.h"
 
 namespace hexplore::evaluation {
@@ -23,15 +24,7 @@ v1::RobotPose pose_at(double x, double y) {
   return p;
 }
 
-v1::ServiceStatus status(std::initializer_list<std::pair<std::string, double>> values) {
-  v1::ServiceStatus s;
-  for (const auto& [name, value] : values) {
-    auto* v = s.add_values();
-    v->set_name(name);
-    v->set_value(value);
-  }
-  return s;
-}
+using testing::status;
 
 // What the station hears in sim second `t` of a mission that started at sim time 100 s.
 void hear_second(TeamRecorder& r, int t) {

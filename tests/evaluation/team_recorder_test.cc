@@ -4,6 +4,7 @@
 
 #include "common/core/team_config.h"
 #include "common/evaluation/team_recorder.h"
+#include "tests/evaluation/status_fixture.h"
 
 namespace hexplore::evaluation {
 namespace {
@@ -55,15 +56,7 @@ TEST(TeamRecorder, IgnoresEverythingBeforeStart) {
   EXPECT_TRUE(r.record().team_bytes.empty());
 }
 
-v1::ServiceStatus status(std::initializer_list<std::pair<std::string, double>> values) {
-  v1::ServiceStatus s;
-  for (const auto& [name, value] : values) {
-    auto* v = s.add_values();
-    v->set_name(name);
-    v->set_value(value);
-  }
-  return s;
-}
+using testing::status;
 
 TEST(TeamRecorder, TrajectoryLengthUsesOdometryAndBytesAreCategorised) {
   const auto t = team();
