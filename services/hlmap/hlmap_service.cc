@@ -181,6 +181,7 @@ void HlmapService::verify_digest(const highlevel::SourcedUpdate& update) {
   ++digests_checked_;
   if (copy != nullptr && copy->digest() == update.digest) {
     diverged_.erase(update.source);
+    unrepairable_.erase(update.source);
     return;
   }
   ++digest_mismatches_;
@@ -189,11 +190,13 @@ void HlmapService::verify_digest(const highlevel::SourcedUpdate& update) {
   const std::string peer(transport::topics::peer_label(update.source));
   if (update.update.full_snapshot) {
     // Even the whole contribution differs here (supervoxels dropped as malformed): asking
-    // again would bring the same; the next increment is compared again.
+    // again would bring the same, so no snapshot is asked for until a digest matches again.
+    unrepairable_.insert(update.source);
     core::log_once(core::LogLevel::kWarn, "hlmap", "digest-snapshot/" + peer,
                    robot_id_ + ": '" + update.source + "''s snapshot differs from its digest; not asked again (logged once)");
     return;
   }
+  if (unrepairable_.contains(update.source)) return;
   core::log_once(core::LogLevel::kWarn, "hlmap", "digest/" + peer,
                  robot_id_ + ": '" + update.source + "''s contribution differs here from its digest at increment " +
                      std::to_string(update.seq) + "; fetching a snapshot (counted in "

@@ -91,6 +91,9 @@ class HlmapService : public service::Service {
   highlevel::PeerSyncStats reported_;  // sync stats already added to the counters
   // Peers whose contribution, as applied here, differed from the digest they sent with it.
   std::set<std::string> diverged_;
+  // Of those, the ones whose snapshot differed too: no more snapshots are asked of them until a
+  // digest matches (a snapshot per increment would not repair them).
+  std::set<std::string> unrepairable_;
   double digests_checked_ = 0.0;
   double digest_mismatches_ = 0.0;
 };

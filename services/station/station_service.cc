@@ -331,7 +331,8 @@ void StationService::finish(const std::string& reason) {
     try {
       const auto files = evaluation::write_results(record, options_.results_dir);
       // The results hold the whole record now; a station started later begins a new one.
-      if (!checkpoint_path_.empty()) std::filesystem::remove(checkpoint_path_);
+      std::error_code ignored;  // a checkpoint left behind is found to be an earlier mission's
+      if (!checkpoint_path_.empty()) std::filesystem::remove(checkpoint_path_, ignored);
       std::printf("[station] mission over (%s) after %.1f s sim time; completeness %.1f%%; results in %s (%zu files)\n",
                   end_reason_.c_str(), record.exploration_time_s, 100.0 * record.final_team_completeness(),
                   options_.results_dir.c_str(), files.size());
