@@ -269,8 +269,9 @@ def check(condition, message):
 summary = json.load(open(results + "/summary.json"))
 station = summary["station"]
 check(station["restarts"] == 1, f"the record says the station restarted {station['restarts']} time(s)")
-# The checkpoint is at most one snapshot period (10 s) old, then 3 s down and the restart.
-check(0 < station["unrecorded_s"] < 30, f"{station['unrecorded_s']:.1f} s of the mission unrecorded (0-30 s)")
+# The checkpoint is at most one snapshot period (10 s) old, then 3 s down and the restart (the
+# new station's start takes a few wall seconds, three times that in sim time): 12-18 s here.
+check(0 < station["unrecorded_s"] < 60, f"{station['unrecorded_s']:.1f} s of the mission unrecorded (0-60 s)")
 # The record spans the mission: samples and trajectories from its start, on the same clock.
 times = [float(r["sim_time_s"]) for r in csv.DictReader(open(results + "/completeness.csv"))]
 before = [t for t in times if t <= stopped_at]
@@ -279,7 +280,9 @@ check(len(before) >= 2 and times[-1] > stopped_at + 10,
 starts = {}
 for r in csv.DictReader(open(results + "/trajectories.csv")):
     starts.setdefault(r["robot"], float(r["sim_time_s"]))
-check(len(starts) == 2 and max(starts.values()) < 2.0, f"trajectories from the mission start: {starts}")
+# Poses come at least every 2 s (dead reckoning), so a robot standing at the start is first
+# recorded up to 2 s in; the restart came at about 40 s.
+check(len(starts) == 2 and max(starts.values()) <= 5.0, f"trajectories from the mission start: {starts}")
 sys.exit(0 if ok else 1)
 PY
     ;;
