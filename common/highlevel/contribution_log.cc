@@ -63,7 +63,9 @@ SourcedUpdate ContributionLog::take_increment() {
   }
   pending_keys_.clear();
   pending_edges_.clear();
-  inc.digest = published_.digest();
+  // A heartbeat changes nothing: the digest of the last change still holds.
+  if (!inc.update.empty()) published_digest_ = published_.digest();
+  inc.digest = published_digest_;
   return inc;
 }
 
@@ -73,7 +75,7 @@ SourcedUpdate ContributionLog::snapshot() const {
   snap.seq = seq_;
   snap.incarnation = incarnation_;
   snap.update = published_.snapshot();
-  snap.digest = published_.digest();
+  snap.digest = published_digest_;
   return snap;
 }
 

@@ -71,6 +71,7 @@ class ContributionLog {
   uint64_t seq_ = 0;
   Contribution current_;    // the segmenter's state
   Contribution published_;  // what the increments so far carried
+  uint32_t published_digest_ = Contribution{}.digest();  // published_.digest(), kept with it
   std::set<uint64_t> pending_keys_;
   std::set<EdgeKey> pending_edges_;
 };

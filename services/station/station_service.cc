@@ -119,6 +119,8 @@ void StationService::setup(service::ServiceContext& context) {
   // In lockstep the station shares the team's process: it cannot restart on its own.
   if (!context.lockstep()) {
     checkpoint_path_ = (std::filesystem::path(options_.results_dir) / evaluation::kCheckpointFileName).string();
+    std::error_code ec;  // a folder that cannot be made shows as failed saves, counted
+    std::filesystem::create_directories(options_.results_dir, ec);
     find_checkpoint();
   }
 
@@ -405,9 +407,8 @@ void StationService::save_checkpoint() {
   const double wall_s = wall_before_resume_s_ + core::ns_to_s(core::monotonic_ns() - start_wall_ns_);
   checkpoint.set_start_wall_ms(static_cast<int64_t>(1e3 * (core::ns_to_s(core::wall_time_ns()) - wall_s)));
   try {
-    std::filesystem::create_directories(options_.results_dir);
     evaluation::save_checkpoint(checkpoint, checkpoint_path_);
-  } catch (const std::exception& e) {  // CheckpointError, or filesystem_error from the folder
+  } catch (const evaluation::CheckpointError& e) {
     checkpoint_errors_->increment();
     core::log_once(core::LogLevel::kWarn, "station", "checkpoint-save",
                    std::string(e.what()) + " (a restarted station could not resume the record; logged once)");
