@@ -151,6 +151,10 @@ struct AlgorithmParams {
   double beta_l = 0.5;
   double beta_zeta = 10.0;
   double beta_varsigma = 1.0;
+  // What the execution time delta(tau, k) of a cluster charges (planning/cluster_work.h):
+  // "cover" (the views that together see the cluster's targets, as its MNSS tour stands at) or
+  // "every_view" (a walk to and a dwell at every task view: the paper's formula as written).
+  std::string cluster_work = "cover";
   // Assignment fitness.
   double beta_e = 0.5;
   double beta_c = 1.0;

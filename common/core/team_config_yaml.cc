@@ -222,7 +222,7 @@ void read_liveness(const Reader& r, const YAML::Node& n, LivenessParams& l) {
 void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   const std::string path = "params";
   r.only_keys(n, path, {"map_resolution_m", "rho_th", "rho_measure", "min_ise_patch_voxels", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg", "shared_view_angle_margin_deg",
-                        "task_view_choice", "beta_i", "beta_l", "beta_zeta", "beta_varsigma", "beta_e", "beta_c", "beta_m", "beta_d",
+                        "task_view_choice", "cluster_work", "beta_i", "beta_l", "beta_zeta", "beta_varsigma", "beta_e", "beta_c", "beta_m", "beta_d",
                         "reference_window", "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "liveness", "ga_population",
                         "ga_max_generations", "ga_time_budget_s", "planner", "seed"});
   r.read(n, path, "map_resolution_m", p.map_resolution_m);
@@ -246,6 +246,9 @@ void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   if (p.task_view_choice != "weakest_species" && p.task_view_choice != "best_score")
     r.fail(n["task_view_choice"], path + ".task_view_choice",
            "must be weakest_species or best_score, got '" + p.task_view_choice + "'");
+  r.read(n, path, "cluster_work", p.cluster_work);
+  if (p.cluster_work != "cover" && p.cluster_work != "every_view")
+    r.fail(n["cluster_work"], path + ".cluster_work", "must be cover or every_view, got '" + p.cluster_work + "'");
   r.read(n, path, "beta_i", p.beta_i);
   r.read(n, path, "beta_l", p.beta_l);
   r.read(n, path, "beta_zeta", p.beta_zeta);

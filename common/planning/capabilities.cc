@@ -50,6 +50,7 @@ PlannerOptions PlannerOptions::from(const core::AlgorithmParams& p) {
   o.theta_u_deg = p.theta_u_deg;
   o.shared_view_margin_deg = p.shared_view_angle_margin_deg;
   o.weakest_species_views = p.task_view_choice == "weakest_species";
+  o.cover_cluster_work = p.cluster_work == "cover";
   o.beta_i = p.beta_i;
   o.beta_l = p.beta_l;
   o.beta_zeta = p.beta_zeta;

@@ -60,6 +60,10 @@ struct PlannerOptions {
   // team's longest range ("best_score").
   bool weakest_species_views = true;
   double beta_zeta = 10.0, beta_varsigma = 1.0; // capability score a(k)
+  // delta(tau, k) charges the cover of a cluster's targets (core::AlgorithmParams::cluster_work
+  // "cover"); false: every task view ("every_view"). Planners whose tours visit every view of a
+  // cluster charge every view whatever this says.
+  bool cover_cluster_work = true;
   double beta_e = 0.5, beta_c = 1.0, beta_m = 1.5, beta_d = 3.0;
   int reference_window = 2;     // core::AlgorithmParams::reference_window
   double eta_s_m = 1.0;         // supervoxel seed interval (ray-cast cell size)

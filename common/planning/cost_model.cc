@@ -8,7 +8,8 @@ namespace hexplore::planning {
 AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const std::vector<TaskView>& views,
                                     const std::vector<TaskCluster>& clusters, const TeamCapabilities& team,
                                     const std::vector<RobotState>& robots,
-                                    const std::vector<std::optional<uint64_t>>& robot_vertices) {
+                                    const std::vector<std::optional<uint64_t>>& robot_vertices,
+                                    const CoverReading* cover) {
   AssignmentInstance out;
   const int S = int(team.species.size());
   const int R = int(robots.size());
@@ -40,7 +41,13 @@ AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const
       double walk = 0.0;
       for (int v : cl.views) walk += graph.dist(*a, views[size_t(v)].ground_key, g);
       if (!std::isfinite(walk)) continue;
-      delta[c][size_t(k)] = walk / out.speed[size_t(k)] + cl.facade_views / std::max(1e-6, team.species[size_t(k)].observation_speed);
+      int dwells = cl.facade_views;
+      if (cover) {
+        const ClusterWork work = cover_work(cover->context, views, cl, team.species[size_t(k)], cover->options);
+        walk = work.walk_m;
+        dwells = work.dwells;
+      }
+      delta[c][size_t(k)] = walk / out.speed[size_t(k)] + dwells / std::max(1e-6, team.species[size_t(k)].observation_speed);
     }
   }
   // Keep clusters that some robot of a matching species can reach.

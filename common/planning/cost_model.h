@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/planning/capabilities.h"
+#include "common/planning/cluster_work.h"
 #include "common/planning/clustering.h"
 #include "common/planning/mtsp/mtsp_problem.h"
 #include "common/planning/planning_types.h"
@@ -26,10 +27,19 @@ struct AssignmentInstance {
   std::vector<double> speed;           // per species
 };
 
-// `robot_vertices` is RoundInputs::robot_vertices (index = robot).
+// The map a cluster's cover is computed on (cluster_work.h, the cover reading of delta).
+struct CoverReading {
+  const MapContext& context;
+  const PlannerOptions& options;
+};
+
+// `robot_vertices` is RoundInputs::robot_vertices (index = robot). `cover` null: delta walks to
+// and dwells at every task view (the paper's formula as written); otherwise it charges the
+// cover of the cluster's targets. Either way a species must reach every view of a cluster.
 AssignmentInstance build_assignment(const highlevel::TopologyGraph& graph, const std::vector<TaskView>& views,
                                     const std::vector<TaskCluster>& clusters, const TeamCapabilities& team,
                                     const std::vector<RobotState>& robots,
-                                    const std::vector<std::optional<uint64_t>>& robot_vertices);
+                                    const std::vector<std::optional<uint64_t>>& robot_vertices,
+                                    const CoverReading* cover = nullptr);
 
 }  // namespace hexplore::planning

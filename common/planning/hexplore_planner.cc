@@ -111,7 +111,11 @@ PlanResult HexplorePlanner::plan(const PlanRequest& req) {
   out.times.clustering_s = clock.lap();
 
   // Assignment.
-  const AssignmentInstance inst = build_assignment(graph, views, clusters, team, req.robots, in.robot_vertices);
+  // delta charges what the tours will stand at: MNSS's cover, or every view without MNSS.
+  const CoverReading cover{*in.context, o};
+  const bool charge_cover = o.cover_cluster_work && ablation_ != Ablation::kNoMnss && ablation_ != Ablation::kNoCluster;
+  const AssignmentInstance inst =
+      build_assignment(graph, views, clusters, team, req.robots, in.robot_vertices, charge_cover ? &cover : nullptr);
   out.dropped_clusters = int(inst.dropped.size());
   for (int c : inst.city_cluster) out.open_views += int(clusters[size_t(c)].views.size());
   std::vector<uint64_t> city_ids;

@@ -28,7 +28,8 @@ PlanResult TspgaPlanner::plan(const PlanRequest& req) {
   out.clusters = int(clusters.size());
   out.times.clustering_s = clock.lap();
 
-  // The hexplore cost model over the clusters (labels: public, or private to one species).
+  // The hexplore cost model over the clusters (labels: public, or private to one species);
+  // its tours visit every view of a cluster, so delta charges every view.
   const AssignmentInstance inst = build_assignment(graph, views, clusters, team, req.robots, in.robot_vertices);
   out.dropped_clusters = int(inst.dropped.size());
   for (int c : inst.city_cluster) out.open_views += int(clusters[size_t(c)].views.size());

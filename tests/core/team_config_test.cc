@@ -171,6 +171,14 @@ TEST(TeamConfig, TaskViewChoiceIsReadAndChecked) {
                "must be weakest_species or best_score, got 'nearest'");
 }
 
+TEST(TeamConfig, ClusterWorkIsReadAndChecked) {
+  EXPECT_EQ(parse_team_config(kMinimal, "t").params.cluster_work, "cover");
+  EXPECT_EQ(parse_team_config(std::string(kMinimal) + "params: {cluster_work: every_view}\n", "t").params.cluster_work,
+            "every_view");
+  expect_error(std::string(kMinimal) + "params: {cluster_work: all}\n", "params.cluster_work",
+               "must be cover or every_view, got 'all'");
+}
+
 TEST(TeamConfig, DuplicateRobotIsRejected) {
   expect_error("species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}, {id: a, species: SLUGCAT}]\n",
                "robots[1].id", "duplicate robot id");

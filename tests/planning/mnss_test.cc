@@ -1,11 +1,15 @@
 #include "common/planning/mnss.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include <gtest/gtest.h>
 
 #include "common/core/team_config.h"
+#include "common/planning/cluster_work.h"
+#include "common/planning/cost_model.h"
+#include "common/planning/round_inputs.h"
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/frontier.h"
 #include "common/planning/mtsp/mtsp_problem.h"
@@ -93,6 +97,75 @@ TEST(Mnss, CoversEveryTargetWithFewerViews) {
     for (size_t i = 0; i < tour.size(); ++i) EXPECT_EQ(repeat[i].key, tour[i].key);
   }
   EXPECT_LT(total_after, total_before);
+}
+
+// The cover reading of delta (cluster_work.h): a cluster's targets are seen from a few of its
+// views, so each species stands at fewer facade views than the cluster has, and the cost model
+// charges much less than the paper's walk to and dwell at every view.
+TEST(ClusterWork, TheCoverStandsAtFewerViewsThanTheClusterHas) {
+  OneBuilding b;
+  const MapContext ctx(b.map, b.o);
+  const auto views = generate_task_views(ctx, b.caps, b.o);
+  const auto clusters = cluster_views(views, b.o.eta_r_m);
+  int facade_views = 0, dwells = 0;
+  for (const auto& cl : clusters) {
+    if (cl.label != kPublic) continue;
+    for (const auto& species : b.caps.species) {
+      const ClusterWork work = cover_work(ctx, views, cl, species, b.o);
+      EXPECT_LE(work.dwells, std::max(1, cl.facade_views)) << "cluster " << cl.id;
+      if (cl.facade_views > 0) {
+        EXPECT_GE(work.dwells, 1) << "cluster " << cl.id;
+      }
+      EXPECT_GE(work.walk_m, 0.0);
+      const ClusterWork again = cover_work(ctx, views, cl, species, b.o);
+      EXPECT_EQ(again.dwells, work.dwells);
+      EXPECT_EQ(again.walk_m, work.walk_m);
+      facade_views += cl.facade_views;
+      dwells += work.dwells;
+    }
+  }
+  ASSERT_GT(facade_views, 0);
+  EXPECT_LT(2 * dwells, facade_views);
+
+  // The cost model: the same clusters and reachability, each execution time no more than half
+  // the every-view one in total.
+  std::vector<RobotState> robots(2);
+  robots[0].species = 0;
+  robots[0].position = {1, 1, 0};
+  robots[1].species = 1;
+  robots[1].position = {2, 1, 0};
+  const auto& graph = b.map.graph();
+  const auto vertices = robot_vertices(graph, robots, b.caps);
+  const CoverReading cover{ctx, b.o};
+  const AssignmentInstance literal = build_assignment(graph, views, clusters, b.caps, robots, vertices);
+  const AssignmentInstance covered = build_assignment(graph, views, clusters, b.caps, robots, vertices, &cover);
+  ASSERT_EQ(covered.city_cluster, literal.city_cluster);
+  double sum_literal = 0.0, sum_cover = 0.0;
+  for (size_t k = 0; k < literal.problem.execution.size(); ++k)
+    for (size_t i = 0; i < literal.problem.execution[k].size(); ++i) {
+      const double a = literal.problem.execution[k][i], c = covered.problem.execution[k][i];
+      ASSERT_EQ(std::isfinite(a), std::isfinite(c));
+      if (std::isfinite(a)) {
+        sum_literal += a;
+        sum_cover += c;
+      }
+    }
+  EXPECT_LT(2 * sum_cover, sum_literal);
+}
+
+// A cluster of one view: the robot stands there, no walk inside the cluster.
+TEST(ClusterWork, ASingleViewIsOneDwellAndNoWalk) {
+  OneBuilding b;
+  const MapContext ctx(b.map, b.o);
+  const auto views = generate_task_views(ctx, b.caps, b.o);
+  for (const auto& cl : singleton_clusters(views)) {
+    if (cl.label != kPublic || cl.facade_views == 0) continue;
+    const ClusterWork work = cover_work(ctx, views, cl, b.caps.species[1], b.o);
+    EXPECT_EQ(work.dwells, 1);
+    EXPECT_NEAR(work.walk_m, 0.0, 1e-9);
+    return;
+  }
+  FAIL() << "no public facade view";
 }
 
 // Ground at the frontier of the known ground (here the synthetic grid's edge: the planning
