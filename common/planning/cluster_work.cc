@@ -1,7 +1,6 @@
 #include "common/planning/cluster_work.h"
 
-#include <algorithm>
-#include <unordered_map>
+#include <unordered_set>
 
 #include "common/planning/mnss.h"
 #include "common/planning/visibility.h"
@@ -12,13 +11,13 @@ ClusterWork cover_work(const MapContext& ctx, const std::vector<TaskView>& views
                        const SpeciesCapability& species, const PlannerOptions& options) {
   // Targets: every ISE supervoxel the cluster's views were made for (own and composite).
   std::vector<const highlevel::Supervoxel*> targets;
-  std::vector<int> target_view;  // the view made for each target
-  std::unordered_map<uint64_t, int> target_index;
-  for (int v : cluster.views)
-    for (uint64_t t : views[size_t(v)].targets)
-      if (const auto* sv = ctx.map.find(t); sv && target_index.emplace(t, int(targets.size())).second) {
+  std::vector<size_t> made_by;  // per target: the position in cluster.views of the view made for it
+  std::unordered_set<uint64_t> have;
+  for (size_t c = 0; c < cluster.views.size(); ++c)
+    for (uint64_t t : views[size_t(cluster.views[c])].targets)
+      if (const auto* sv = ctx.map.find(t); sv && have.insert(t).second) {
         targets.push_back(sv);
-        target_view.push_back(v);
+        made_by.push_back(c);
       }
 
   // Which targets each of the cluster's views sees for this species.
@@ -64,12 +63,10 @@ ClusterWork cover_work(const MapContext& ctx, const std::vector<TaskView>& views
     stops.push_back(views[size_t(cluster.views[best])]);
   }
   for (size_t t = 0; t < T; ++t) {
-    if (seen[t]) continue;
-    const auto it = std::find(cluster.views.begin(), cluster.views.end(), target_view[t]);
-    const size_t c = size_t(it - cluster.views.begin());
-    if (picked[c]) continue;
+    const size_t c = made_by[t];
+    if (seen[t] || picked[c]) continue;
     picked[c] = 1;
-    stops.push_back(views[size_t(target_view[t])]);
+    stops.push_back(views[size_t(cluster.views[c])]);
     work.dwells += stops.back().facade ? 1 : 0;
   }
 
