@@ -96,6 +96,25 @@ std::vector<float> make_scan(const Eigen::Vector3d& origin, int points, std::mt1
   return xyz;
 }
 
+// FNV-1a over every voxel's published attributes: equal digests mean a change to the
+// integration code left the map it builds exactly as it was (keep it equal when optimising).
+uint64_t map_digest(const PerceptionMap& map) {
+  uint64_t h = 1469598103934665603ull;
+  auto mix = [&](const void* p, size_t n) {
+    for (size_t i = 0; i < n; ++i) h = (h ^ static_cast<const unsigned char*>(p)[i]) * 1099511628211ull;
+  };
+  for (const hexplore::perception::VoxelView& v : map.voxels()) {
+    const float f[] = {v.mean.x(), v.mean.y(), v.mean.z(), v.normal.x(), v.normal.y(), v.normal.z()};
+    const double m[] = {v.sparsity, v.observation_angle_deg, v.observation_distance_m, v.observation_density};
+    const uint32_t u[] = {static_cast<uint32_t>(v.key.x), static_cast<uint32_t>(v.key.y), static_cast<uint32_t>(v.key.z),
+                          v.point_count, v.flags, v.low_risk_species_mask, static_cast<uint32_t>(v.coverage_gap)};
+    mix(f, sizeof f);
+    mix(m, sizeof m);
+    mix(u, sizeof u);
+  }
+  return h;
+}
+
 double thread_cpu_ms() {
   timespec ts{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
@@ -126,6 +145,7 @@ int main(int argc, char** argv) {
   size_t integrated = 0;
   size_t recomputed = 0;
   size_t touched = 0;
+  size_t changes_published = 0;
   for (int i = 0; i < scans; ++i) {
     ScanPoints scan;
     scan.sensor_origin = origins[i];
@@ -140,11 +160,12 @@ int main(int argc, char** argv) {
     integrated += s.points_integrated;
     recomputed += s.voxels_recomputed;
     touched += s.voxels_touched;
-    if (i % 5 == 4) map.take_changes();  // as the service does every 0.5 s
+    if (i % 5 == 4) changes_published += map.take_changes().size();  // as the service does every 0.5 s
   }
-  map.take_changes();
+  changes_published += map.take_changes().size();
   const size_t heap_after = mallinfo2().uordblks;
   const size_t voxels_moving = map.voxel_count();
+  const uint64_t digest_moving = map_digest(map);
   const size_t octree_bytes = map.memory_bytes();
 
   // A robot standing still: new scans from the last pose mostly add points to known voxels.
@@ -184,5 +205,8 @@ int main(int argc, char** argv) {
   std::printf("  bytes per voxel (octomap accounting)  %6.1f\n", static_cast<double>(octree_bytes) / voxels_moving);
   std::printf("  bytes per voxel (heap incl. malloc and scan scratch) %6.1f\n",
               static_cast<double>(heap_after - heap_before) / voxels_moving);
+  std::printf("  voxel changes published while driving %zu\n", changes_published);
+  std::printf("  map digest after the drive / after standing still  %016llx / %016llx\n",
+              static_cast<unsigned long long>(digest_moving), static_cast<unsigned long long>(map_digest(map)));
   return 0;
 }
