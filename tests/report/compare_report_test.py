@@ -116,6 +116,25 @@ class CompareReport(unittest.TestCase):
         self.assertIn("censored", md)
         self.assertFalse(os.path.exists(os.path.join(self.root, "figures")))
 
+    def test_tail_is_the_time_spent_within_a_tenth_of_a_point_of_the_end(self):
+        # slow's seed 1 (400 s): at 0.9 observable by 100 s, then +0.08 point in the last 300 s.
+        with open(os.path.join(self.root, "slow", "seed-1", "completeness.csv"), "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["sim_time_s", "team", "team_observable", "a", "b"])
+            for t, obs in ((0, 0.0), (100, 0.9), (150, 0.9005), (400, 0.9008)):
+                w.writerow([t, obs, obs, obs, obs])
+        res = run(self.root, self.no_matplotlib_env())
+        self.assertEqual(res.returncode, 0, res.stderr)
+        with open(os.path.join(self.root, "comparison.json")) as f:
+            tail = json.load(f)["metrics"]["slow"]["tail"]
+        # Seed 1: reached at 100 s, tail 300 s (75 %); seed 2 (linear) reaches it at its end.
+        self.assertAlmostEqual(tail["reached_s"]["min"], 100.0)
+        self.assertAlmostEqual(tail["tail_s"]["max"], 300.0)
+        self.assertAlmostEqual(tail["tail_s"]["min"], 0.0)
+        self.assertAlmostEqual(tail["share_of_mission"]["max"], 0.75)
+        with open(os.path.join(self.root, "comparison.md")) as f:
+            self.assertIn("| slow | 350.0 ± 353.6 | 150.0 ± 212.1 | 37.5 ± 53.0 |", f.read())
+
     def test_figures_when_matplotlib_is_there(self):
         try:
             import matplotlib  # noqa: F401

@@ -28,6 +28,11 @@ import sys
 
 CATEGORIES = ["pose", "incremental_map", "executable_path", "exploration_route"]
 OBSERVABLE_LEVELS = [0.5, 0.7, 0.8, 0.9, 0.95, 0.97]
+# The tail: from when observable completeness first comes within this much of its final value
+# to the end. Every planner's default missions spend a fifth to a third of their time there
+# (common/planning/README.md, "The last tenth of a point"), so it sets much of the spread of
+# exploration times.
+TAIL_POINTS = 0.001
 
 
 def stats(values):
@@ -95,6 +100,17 @@ def first_time_at(series, key, level):
     return None
 
 
+def tail_of(run):
+    """(time observable completeness first came within TAIL_POINTS of its final value, the
+    seconds from then to the end), or None without a series."""
+    t, obs = run["series"]["t"], run["series"]["observable"]
+    if not t:
+        return None
+    final = obs[-1]
+    reached = first_time_at(run["series"], "observable", final - TAIL_POINTS)
+    return reached, run["summary"]["exploration_time_s"] - reached
+
+
 def metrics(runs):
     """The paper's metrics of one planner over its runs (seeds)."""
     summaries = [r["summary"] for r in runs]
@@ -141,6 +157,14 @@ def metrics(runs):
     m["communication"] = comm
     m["time_to_observable_completeness_s"] = {
         str(level): stats([first_time_at(r["series"], "observable", level) for r in runs]) for level in OBSERVABLE_LEVELS
+    }
+    tails = [tail_of(r) for r in runs]
+    m["tail"] = {
+        "within_points": 100.0 * TAIL_POINTS,
+        "reached_s": stats([x[0] for x in tails if x]),
+        "tail_s": stats([x[1] for x in tails if x]),
+        "share_of_mission": stats([x[1] / r["summary"]["exploration_time_s"] for x, r in zip(tails, runs)
+                                   if x and r["summary"]["exploration_time_s"] > 0]),
     }
     return m
 
@@ -234,6 +258,14 @@ def markdown(result, order, reference):
         cells = [f"{pm(t[str(l)])} ({t[str(l)]['n']}/{result[n]['runs']})" for l in OBSERVABLE_LEVELS]
         lines.append(f"| {n} | " + " | ".join(cells) + " |")
     lines.append("")
+    lines.append(f"## The tail: from within {100 * TAIL_POINTS:.1f} point of the final observable completeness to the end")
+    lines.append("")
+    lines.append("| planner | reached (s) | tail (s) | share of the mission (%) |")
+    lines.append("|---|---|---|---|")
+    for n in order:
+        t = result[n]["tail"]
+        lines.append(f"| {n} | {pm(t['reached_s'])} | {pm(t['tail_s'])} | {pm(t['share_of_mission'], 1, 100)} |")
+    lines.append("")
     return "\n".join(lines)
 
 
@@ -245,7 +277,7 @@ def write_csv(path, result, order):
               "planning_time_mean_s", "planning_time_max_s", "planning_rounds"]
     for k in CATEGORIES + ["total"]:
         header += [f"{k}_cumulative_kb_per_robot", f"{k}_kb_per_s_per_robot"]
-    header += ["collisions", "time_limited_runs"]
+    header += ["collisions", "time_limited_runs", "tail_reached_s_mean", "tail_s_mean"]
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(header)
@@ -260,7 +292,8 @@ def write_csv(path, result, order):
             for k in CATEGORIES + ["total"]:
                 c = m["communication"][k]
                 row += [c["cumulative_kb_per_robot"]["mean"], c["kb_per_s_per_robot"]["mean"]]
-            row += [m["collisions"], m["end_reasons"].get("time limit", 0)]
+            row += [m["collisions"], m["end_reasons"].get("time limit", 0), m["tail"]["reached_s"]["mean"],
+                    m["tail"]["tail_s"]["mean"]]
             w.writerow(["" if v is None else v for v in row])
 
 
