@@ -48,7 +48,8 @@ std::string round_trace_json(const RoundTrace& round, const PlanRequest& req, co
     j << (i ? ", " : "") << "{\"p\": " << vec(mine.route[i].position) << ", \"facade\": " << (mine.route[i].facade ? 1 : 0)
       << ", \"targets\": " << mine.route[i].targets.size() << "}";
   j << "], \"follower\": {\"reached\": " << f.views_reached << ", \"observed\": " << f.views_observed
-    << ", \"skipped\": " << f.views_skipped << ", \"without_path\": " << f.views_without_path
+    << ", \"skipped\": " << f.views_skipped << ", \"observed_short\": " << f.views_observed_short
+    << ", \"without_path\": " << f.views_without_path
     << ", \"cut_off\": " << f.views_cut_off
     << ", \"done_before\": " << f.views_done_before << ", \"cut_short\": " << f.dwells_cut_short
     << ", \"not_aimed\": " << f.targets_not_aimed

@@ -10,7 +10,8 @@
 // soon as its targets are complete. Whether the targets got complete is judged a settle time
 // later, when the map has caught up with the scans, and what stayed incomplete counts as an
 // attempt in the team's GiveUpLedger.
-// When the robot is blocked or makes no progress, the view is skipped (an attempt too), the
+// When the robot is blocked or makes no progress within a metre of a facade view's spot, it
+// observes the view from where it stands. Otherwise the view is skipped (an attempt too), the
 // vertex it could not reach is kept off by later paths, and the robot first backs off along
 // its recent trail (a leg of its own, to a trail point at least 1 m back) before the path to
 // the next view is planned from there. No sockets: the planning service feeds it poses and the
@@ -78,6 +79,7 @@ struct FollowerCounters {
   int views_reached = 0;
   int views_observed = 0;       // facade views dwelt at
   int views_skipped = 0;        // blocked or stuck on the way
+  int views_observed_short = 0; // facade views observed from within reach_m of a spot the robot could not get nearer to
   int views_without_path = 0;   // no path from here
   int views_cut_off = 0;        // a path only through what `keep_off` excludes (an attempt)
   int views_done_before = 0;    // every target complete or given up before the robot got there
@@ -138,6 +140,10 @@ class RouteFollower {
     return std::span<const TaskView>(route_).subspan(std::min(route_.size(), next_));
   }
   const FollowerCounters& counters() const { return counters_; }
+  // Where the robot stands for `view`: the clearance waypoint of its vertex for this species,
+  // where its executable path ends (up to ClearanceOptions::max_shift_m from the vertex's
+  // centre, away from walls and the rim of the known ground), else the view's position.
+  Eigen::Vector3d standing_spot(const TaskView& view, const highlevel::HighLevelMap& map) const;
   // The judgements since the last call (the trace writes them once per round).
   std::vector<TargetJudgement> take_judgements() { return std::exchange(judgements_, {}); }
 
@@ -155,8 +161,10 @@ class RouteFollower {
   static MotionOrder hold(const Eigen::Vector3d& position);
   std::optional<MotionOrder> drive(const Eigen::Vector3d& position, const highlevel::HighLevelMap& map,
                                    const std::unordered_set<uint64_t>& keep_off, GiveUpLedger& ledger);
+  // `first_from_here`: the next view is observed from `position` though not within reach of it.
   std::optional<MotionOrder> begin_observing(double now_s, const Eigen::Vector3d& position,
-                                             const highlevel::HighLevelMap& map, const GiveUpLedger& ledger);
+                                             const highlevel::HighLevelMap& map, const GiveUpLedger& ledger,
+                                             bool first_from_here = false);
   std::optional<MotionOrder> aim(size_t target_index, const Eigen::Vector3d& position);
   // Queues a facade target to aim at (once).
   void add_aim(uint64_t target, const highlevel::HighLevelMap& map);
@@ -173,7 +181,8 @@ class RouteFollower {
   static TargetJudgement judgement(const highlevel::Supervoxel& sv, const Eigen::Vector3d& spot, bool complete);
   void judge(double now_s, const highlevel::HighLevelMap& map, GiveUpLedger& ledger);
   void keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch);
-  bool reached(const TaskView& view, const Eigen::Vector3d& position) const;  // reach_m / observe_reach_m
+  // Within reach_m (observe_reach_m for facade and frontier views) of its standing spot.
+  bool reached(const TaskView& view, const Eigen::Vector3d& position, const highlevel::HighLevelMap& map) const;
   // Along the executable path (infinite without one).
   double path_length(const Eigen::Vector3d& from, const TaskView& view, const highlevel::HighLevelMap& map) const;
 

@@ -238,6 +238,73 @@ TEST(RouteFollower, AFacadeViewIsObservedFromItsSpotNotNearIt) {
   EXPECT_TRUE(observe->observing);
 }
 
+// Where a view's vertex lies near the rim of the known ground or a wall, the path ends at its
+// clearance waypoint, and the robot is judged against that, not the vertex's centre.
+TEST(RouteFollower, AViewIsReachedWhereItsPathEnds) {
+  core::TeamConfig team;
+  team.species = {core::builtin_slugcat(), core::builtin_mr1000()};
+  highlevel::HighLevelMap map(highlevel::species_levels(team), highlevel::clearance_options(team));
+  highlevel::MapUpdate u = synthetic_scene(small_scene({}));
+  const highlevel::Supervoxel wall = *flat_map().find(kWall);
+  u.upserts.push_back(wall);
+  map.apply(u);
+  const int mr1000 = 1;
+  const auto rim = map.graph().nearest({0.5, 0.5, 0}, mr1000);
+  ASSERT_TRUE(rim);
+  TaskView view;
+  view.key = kWall;
+  view.ground_key = *rim;
+  view.position = *map.graph().position(*rim);
+  view.look_at = wall.center;
+  view.facade = true;
+  view.targets = {kWall};
+  const Eigen::Vector3d stand = *map.graph().waypoint(*rim, mr1000);
+  ASSERT_GT((stand - view.position).head<2>().norm(), 0.1) << "the corner vertex's waypoint moves inwards";
+
+  Drive d;
+  RouteFollower f(d.options, mr1000);
+  EXPECT_LT((f.standing_spot(view, map) - stand).norm(), 1e-9);
+  f.set_route({view}, {6.5, 4.5, 0}, map);
+  const auto drive = f.step(0.0, {6.5, 4.5, 0}, DriveState::kIdle, map, d.keep_off, d.ledger);
+  ASSERT_TRUE(drive);
+  ASSERT_TRUE(drive->path.valid);
+  EXPECT_LT((drive->path.waypoints.back() - stand).head<2>().norm(), 1e-9) << "the path ends at the waypoint";
+  // 0.25 m beyond the waypoint, 0.3 m or more from the vertex's centre: there.
+  const Eigen::Vector3d beyond = stand + (stand - view.position).normalized() * 0.25;
+  ASSERT_GT((beyond - view.position).head<2>().norm(), d.options.observe_reach_m);
+  const auto observe = f.step(20.0, beyond, DriveState::kStopped, map, d.keep_off, d.ledger);
+  ASSERT_TRUE(observe);
+  EXPECT_TRUE(observe->observing);
+}
+
+// A robot that cannot get nearer than 0.3 m to a facade view's spot (its body against the edge
+// of the ground plane) but is within a metre of it looks from there instead of skipping the view.
+TEST(RouteFollower, BlockedWithinAMetreOfAFacadeViewLooksFromThere) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  const TaskView facade = view_at(d.map, {6.5, 6.5, 0}, true);
+  f.set_route({facade}, {1.5, 1.5, 0}, d.map);
+  const Eigen::Vector3d short_of = f.standing_spot(facade, d.map) - Eigen::Vector3d(0.6, 0, 0);
+  ASSERT_TRUE(f.step(0.0, short_of, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  EXPECT_FALSE(f.step(1.0, short_of, DriveState::kBlocked, d.map, d.keep_off, d.ledger));
+  const auto look = f.step(3.5, short_of, DriveState::kBlocked, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(look);
+  EXPECT_TRUE(look->observing);
+  EXPECT_EQ(f.counters().views_skipped, 0);
+  EXPECT_EQ(f.counters().views_observed_short, 1);
+  EXPECT_EQ(f.counters().views_observed, 1);
+
+  // Blocked farther away (2 m): skipped, as before.
+  RouteFollower g(d.options, 0);
+  g.set_route({facade}, {1.5, 1.5, 0}, d.map);
+  const Eigen::Vector3d far = f.standing_spot(facade, d.map) - Eigen::Vector3d(2.0, 0, 0);
+  ASSERT_TRUE(g.step(0.0, far, DriveState::kIdle, d.map, d.keep_off, d.ledger));
+  EXPECT_FALSE(g.step(1.0, far, DriveState::kBlocked, d.map, d.keep_off, d.ledger));
+  g.step(3.5, far, DriveState::kBlocked, d.map, d.keep_off, d.ledger);
+  EXPECT_EQ(g.counters().views_skipped, 1);
+  EXPECT_EQ(g.counters().views_observed_short, 0);
+}
+
 TEST(RouteFollower, AGroundViewIsDoneOnArrival) {
   Drive d;
   RouteFollower f(d.options, 0);
