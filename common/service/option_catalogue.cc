@@ -72,7 +72,7 @@ const std::vector<OptionInfo>& builtin_options() {
       {"stuck-s", "planning", "no 0.5 m of progress this long: skip the view (8 s)"},
       {"switch-gain-m", "planning", "the leg gives way to a first view this much nearer by path (3 m)"},
       {"teammate-timeout-s", "mapping", "a teammate's map silent this long is gone (team file's liveness)"},
-      {"trace-dir", "planning", "write each planning round as a JSON line there"},
+      {"trace-dir", "planning, safety", "write each planning round and safety decision as JSON lines there"},
       {"trace-graph-period-s", "planning", "with --trace-dir: the traversal graph as PLY this often (0: never)"},
       {"wait-for-start", "planning, safety", "hold still until the station's StartMission (false)"},
   };

@@ -1,12 +1,14 @@
 #include "services/safety/safety_service.h"
 
 #include <chrono>
+#include <filesystem>
 
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
 #include "common/core/log.h"
 #include "common/radio/pose_schedule.h"
 #include "common/radio/vec3_proto.h"
+#include "common/safety/decision_trace.h"
 #include "common/safety/fragment_proto.h"
 #include "common/service/mission_state.h"
 #include "common/service/options.h"
@@ -82,6 +84,13 @@ void SafetyService::setup(service::ServiceContext& context) {
   const service::Options opts(context.arguments());
   sim_clock_ = opts.choice("decision-clock", sim_clock_ ? "sim" : "wall", {"sim", "wall"}) == "sim";
   mission_ = service::MissionState(opts.flag("wait-for-start", false));
+  if (const std::string dir = opts.text("trace-dir"); !dir.empty()) {
+    const std::string path = dir + "/safety-" + robot_id_ + ".jsonl";
+    std::error_code ignored;  // a failure shows as the open below failing
+    std::filesystem::create_directories(dir, ignored);
+    trace_.open(path);
+    if (!trace_) throw service::OptionError("trace-dir", "cannot write " + path);
+  }
 
   auto& m = context.metrics();
   const metrics::Labels labels{{"robot", robot_id_}};
@@ -265,8 +274,10 @@ void SafetyService::cycle() {
     context_->set_state(v1::SERVICE_STATE_RUNNING, mission_.reason());
     return;
   }
-  const safety::Decision decision =
-      resolver_->decide(*position_, desired_, path_speed_mps_, peers(), now_s());
+  const std::vector<safety::Fragment> teammates = peers();
+  const safety::Decision decision = resolver_->decide(*position_, desired_, path_speed_mps_, teammates, now_s());
+  if (trace_.is_open() && safety::worth_tracing(decision, last_, *position_, teammates))
+    trace_ << safety::decision_trace_json(now_s(), *position_, decision, teammates) << std::flush;
   if (decision.yielding_to != last_.yielding_to) {
     // Waiting starts and ends are rare and worth seeing in the log; every decision is not.
     if (decision.yielding_to.empty()) {

@@ -8,6 +8,7 @@
 // same way.
 
 #include <cstdint>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -88,6 +89,7 @@ class SafetyService : public service::Service {
   std::map<std::string, Peer> peers_;
   service::MissionState mission_;  // active, stopped or halted, by the station's commands
   safety::Decision last_;
+  std::ofstream trace_;  // decision trace (--trace-dir), common/safety/decision_trace.h
   safety::ResolverCounters reported_;   // counters already added to the metrics
 
   metrics::Counter* conflicts_ = nullptr;
