@@ -26,6 +26,13 @@ constexpr double kSameGoalM = 0.05;
 
 double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
+// Whether `body` overlaps a teammate's body (own box, by `self`, excluded).
+bool touches_a_teammate(const ProxyBox& body, std::span<const ProxyBox> teammates, uint32_t self) {
+  for (const ProxyBox& mate : teammates)
+    if (mate.id != self && boxes_overlap(body, mate)) return true;
+  return false;
+}
+
 }  // namespace
 
 const char* to_string(MotionState s) {
@@ -143,12 +150,10 @@ double RobotMotion::drive_maneuver(double budget, std::span<const ProxyBox> team
   const Footprint& to = maneuver_.front();
   // Teammates move meanwhile: one now in the way ends the manoeuvre (blocked: the planner and
   // the safety layer take it from there).
-  const ProxyBox body = body_box_at(probe_, to);
-  for (const ProxyBox& mate : teammates)
-    if (mate.id != id_ && boxes_overlap(body, mate)) {
-      block(TerrainVerdict::kObstacle);
-      return budget;
-    }
+  if (touches_a_teammate(body_box_at(probe_, to), teammates, id_)) {
+    block(TerrainVerdict::kObstacle);
+    return budget;
+  }
   const Eigen::Vector2d delta = to.xy - footprint_.xy;
   const double dist = delta.norm();
   const double move = std::min({budget, dist, kMaxSubstepM});
@@ -201,9 +206,13 @@ void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
         turned = probe_.turn(footprint_, wrap(heading + M_PI));
         reversing_ = turned.has_value();
       }
-      if (!turned && !trail_.empty()) {
+      if (!turned && !trail_.empty() &&
+          !touches_a_teammate(body_box_at(probe_, trail_.back(), ManeuverOptions{}.teammate_margin_m), teammates, id_)) {
         // No room to turn here: back up one pose the way we came (each was reached by a
-        // checked move or turn, so undoing it is free too) and try again from there.
+        // checked move or turn, so undoing it is free of the scene, not of a teammate that
+        // came up behind since: the safety layer approved the path ahead, not this, and a
+        // SLUGCAT backing up so touched an MR1000 waiting behind it, multi-building seed 2 at
+        // 1,028 s, services/safety/README.md) and try again from there.
         const Footprint back = trail_.back();
         trail_.pop_back();
         const double step = (back.xy - footprint_.xy).norm();

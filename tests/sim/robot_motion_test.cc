@@ -172,6 +172,26 @@ TEST(RobotMotion, NosedIntoADeadEndBacksOut) {
   }
 }
 
+// Backing up the way it came to find room to turn, a body never backs into a teammate that
+// came up behind it meanwhile (multi-building seed 2: a SLUGCAT that could not turn backed
+// into the MR1000 yielding behind it; the safety layer had approved the path ahead, not that).
+TEST(RobotMotion, BackingUpToTurnStopsShortOfATeammateBehind) {
+  const RayCaster caster(dead_end());
+  RobotMotion robot(caster, core::builtin_slugcat(), {0, 1, 0}, -M_PI / 2, /*id=*/1);
+  ASSERT_EQ(drive(robot, {{0, -3, 0}}, 30), MotionState::kIdle);
+  ProxyBox mate;  // an MR1000 just behind, 0.1 m clear of the SLUGCAT's back
+  mate.id = 2;
+  mate.center = {0.0, -3.0 + 0.45 + 0.1 + 0.5, 0.4};
+  mate.half_extents = {0.35, 0.5, 0.4};
+  const std::vector<ProxyBox> mates = {mate};
+  // Sideways through the wall: it cannot turn either way in the corridor, so it would back up.
+  robot.follow({{3, -3, 0}});
+  for (double t = 0; t < 20 && robot.state() == MotionState::kMoving; t += 0.1) robot.step(0.1, mates);
+  EXPECT_EQ(robot.collisions(), 0u);
+  EXPECT_EQ(robot.state(), MotionState::kBlocked);
+  EXPECT_LT(robot.ground_position().y() + 0.45, mate.center.y() - mate.half_extents.y());  // its back short of the mate
+}
+
 // In the open the body turns in place to face a waypoint behind it and drives forward.
 TEST(RobotMotion, TurnsInPlaceWhereItFits) {
   const RayCaster caster(test_course());
