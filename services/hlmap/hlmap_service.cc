@@ -82,6 +82,16 @@ void HlmapService::setup(service::ServiceContext& context) {
   metrics_.window_bytes_team_map = window_bytes(topics::kTeamMap);
   metrics_.window_bytes_hlmap = window_bytes(topics::kHlmap);
   metrics_.window_bytes_snapshots = window_bytes("repair");
+  auto facades = [&](std::string_view held_by) {
+    return gauge("hexplore_hlmap_incomplete_facades",
+                 "Incomplete facade supervoxels of the fused map, by whose maps hold them (own: only this robot's; "
+                 "teammates_own_cell: teammates' only, while this robot's map holds the same cell under another key)",
+                 {{"robot", robot_id_}, {"held_by", std::string(held_by)}});
+  };
+  metrics_.facades_own_only = facades("own");
+  metrics_.facades_shared = facades("shared");
+  metrics_.facades_teammates_only = facades("teammates");
+  metrics_.facades_teammates_own_cell = facades("teammates_own_cell");
   auto counter = [&](const std::string& name, const std::string& help) { return m.counter_family(name, help)->add(labels); };
   metrics_.gaps_detected = counter("hexplore_hlmap_gaps_detected_total", "Gaps in peers' increment sequences");
   metrics_.gaps_repaired = counter("hexplore_hlmap_gaps_repaired_total", "Gaps closed by a repair snapshot");
@@ -297,6 +307,11 @@ void HlmapService::window() {
   metrics_.supervoxels->set(static_cast<double>(map.size()));
   metrics_.edges->set(static_cast<double>(map.edges().size()));
   metrics_.graph_vertices->set(static_cast<double>(map.graph().vertex_count()));
+  facade_holders_ = highlevel::incomplete_facade_holders(*fusion_, robot_id_);
+  metrics_.facades_own_only->set(static_cast<double>(facade_holders_.own_only));
+  metrics_.facades_shared->set(static_cast<double>(facade_holders_.shared));
+  metrics_.facades_teammates_only->set(static_cast<double>(facade_holders_.teammates_only));
+  metrics_.facades_teammates_own_cell->set(static_cast<double>(facade_holders_.teammates_only_own_cell));
   if (map.size() > 0) context_->set_state(v1::SERVICE_STATE_RUNNING);
 }
 
@@ -340,6 +355,10 @@ void HlmapService::fill_status(v1::ServiceStatus& status) {
   add("snapshots_applied", static_cast<double>(sync_->stats().snapshots_applied));
   add("peer_restarts", static_cast<double>(sync_->stats().restarts));
   add("full_map_bytes", full_map_bytes_);
+  add("incomplete_facades.own", static_cast<double>(facade_holders_.own_only));
+  add("incomplete_facades.shared", static_cast<double>(facade_holders_.shared));
+  add("incomplete_facades.teammates", static_cast<double>(facade_holders_.teammates_only));
+  add("incomplete_facades.teammates_own_cell", static_cast<double>(facade_holders_.teammates_only_own_cell));
 }
 
 }  // namespace hexplore::hlmap_service

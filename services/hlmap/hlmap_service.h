@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/highlevel/contribution_log.h"
+#include "common/highlevel/facade_holders.h"
 #include "common/highlevel/map_fusion.h"
 #include "common/highlevel/peer_sync.h"
 #include "common/highlevel/segmenter.h"
@@ -76,6 +77,11 @@ class HlmapService : public service::Service {
     metrics::Gauge* window_bytes_team_map = nullptr;
     metrics::Gauge* window_bytes_hlmap = nullptr;
     metrics::Gauge* window_bytes_snapshots = nullptr;
+    // Incomplete facades of the fused map by whose maps hold them (highlevel/facade_holders.h).
+    metrics::Gauge* facades_own_only = nullptr;
+    metrics::Gauge* facades_shared = nullptr;
+    metrics::Gauge* facades_teammates_only = nullptr;
+    metrics::Gauge* facades_teammates_own_cell = nullptr;
     metrics::Counter* gaps_detected = nullptr;
     metrics::Counter* gaps_repaired = nullptr;
     metrics::Counter* repair_requests = nullptr;
@@ -88,6 +94,7 @@ class HlmapService : public service::Service {
     metrics::Counter* malformed_supervoxels = nullptr;
     metrics::Counter* full_map_bytes = nullptr;
   } metrics_;
+  highlevel::FacadeHolders facade_holders_;  // as of the last window
   highlevel::PeerSyncStats reported_;  // sync stats already added to the counters
   // Peers whose contribution, as applied here, differed from the digest they sent with it.
   std::set<std::string> diverged_;
