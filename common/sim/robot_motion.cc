@@ -212,7 +212,7 @@ void RobotMotion::step(double dt_s, std::span<const ProxyBox> teammates) {
         // checked move or turn, so undoing it is free of the scene, not of a teammate that
         // came up behind since: the safety layer approved the path ahead, not this, and a
         // SLUGCAT backing up so touched an MR1000 waiting behind it, multi-building seed 2 at
-        // 1,028 s, services/safety/README.md) and try again from there.
+        // 1,028 s, services/sim/README.md) and try again from there.
         const Footprint back = trail_.back();
         trail_.pop_back();
         const double step = (back.xy - footprint_.xy).norm();

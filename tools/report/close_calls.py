@@ -10,7 +10,7 @@ Per close call and robot: the decisions (kind and reason, with how many lines ea
 the moves the driver made that its safety layer did not approve: a move of more than 2 cm
 against the direction of the approved path (the body went backwards), or any move of more
 than 5 cm while the decision was a stop. Such moves are outside the conflict resolution (the
-multi-building contact of stop 52: a SLUGCAT backing up to find room to turn, into the MR1000
+multi-building contact traced in stop 52: a SLUGCAT backing up to find room to turn, into the MR1000
 that was yielding to it; services/sim/README.md).
 
 Standard library only. Usage: close_calls.py TRACE_DIR [--below 1.3] [--robot ID]
