@@ -29,6 +29,7 @@
 #include "hexplore/v1/status.pb.h"
 #include "tests/highlevel/synthetic_map.h"
 #include "tests/support/scratch_dir.h"
+#include "tests/support/test_ports.h"
 #include "tests/support/voxel_sample_wire.h"
 #include "tests/transport/child_process.h"
 
@@ -41,8 +42,7 @@ using hexplore::testing::ChildProcess;
 const std::vector<std::string> kRobots = {"a", "b", "c"};
 
 core::TeamConfig write_team(std::string* path) {
-  std::random_device device;
-  const int base_port = 23000 + static_cast<int>(device() % 300) * 100;
+  const int base_port = hexplore::testing::random_base_port();
   static const hexplore::testing::ScratchDir scratch("hlmap_service_test");  // removed when the binary exits
   *path = scratch.file("team_" + std::to_string(base_port) + ".yaml");
   std::ofstream out(*path);

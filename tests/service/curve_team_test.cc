@@ -19,6 +19,7 @@
 #include "hexplore/v1/status.pb.h"
 #include "hexplore/v1/test_messages.pb.h"
 #include "tests/support/scratch_dir.h"
+#include "tests/support/test_ports.h"
 #include "tests/transport/child_process.h"
 
 namespace hexplore::service {
@@ -28,8 +29,7 @@ using namespace std::chrono_literals;
 using testing::ChildProcess;
 
 std::string write_team(const hexplore::testing::ScratchDir& dir) {
-  std::random_device device;
-  const int base_port = 20000 + static_cast<int>(device() % 400) * 100;
+  const int base_port = hexplore::testing::random_base_port();
   const std::string path = dir.file("team.yaml");
   std::ofstream(path) << "species:\n  - builtin: SLUGCAT\nrobots:\n  - {id: a, species: SLUGCAT}\n"
                       << "  - {id: b, species: SLUGCAT}\ntransport:\n  scheme: tcp\n  base_port: " << base_port

@@ -13,6 +13,7 @@
 #include "common/service/service.h"
 #include "tests/service/echo_service.h"
 #include "tests/support/scratch_dir.h"
+#include "tests/support/test_ports.h"
 #include "tests/transport/child_process.h"
 
 namespace hexplore::service {
@@ -30,8 +31,7 @@ const hexplore::testing::ScratchDir& scratch() {
 
 // A team file in the test's temp dir, on a random block of ports so parallel tests don't collide.
 std::string write_team(const std::string& name, const std::string& extra = "", int* base_port_out = nullptr) {
-  std::random_device device;
-  const int base_port = 20000 + static_cast<int>(device() % 400) * 100;
+  const int base_port = hexplore::testing::random_base_port();
   if (base_port_out) *base_port_out = base_port;
   const std::string path = scratch().file(name + ".yaml");
   std::ofstream out(path);
