@@ -1,6 +1,7 @@
 #include "common/service/options.h"
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
@@ -88,6 +89,18 @@ std::string Options::choice(const std::string& key, const std::string& fallback,
     listed += (listed.empty() ? "" : ", ") + std::string(w);
   }
   throw OptionError(key, "expects one of " + listed + ", got " + quoted(it->second));
+}
+
+std::ofstream open_trace_file(const Options& options, const std::string& file_name) {
+  std::ofstream out;
+  const std::string dir = options.text("trace-dir");
+  if (dir.empty()) return out;
+  std::error_code ignored;  // a failure shows as the open below failing
+  std::filesystem::create_directories(dir, ignored);
+  const std::string path = dir + "/" + file_name;
+  out.open(path);
+  if (!out) throw OptionError("trace-dir", "cannot write " + path);
+  return out;
 }
 
 }  // namespace hexplore::service

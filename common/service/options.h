@@ -6,6 +6,7 @@
 // core::ConfigError naming the flag, so the process says which flag is wrong and why and
 // exits with 2 (service_main.cc) instead of running on a value nobody meant.
 
+#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -48,5 +49,9 @@ class Options {
 
   const Arguments& args_;
 };
+
+// `file_name` in the --trace-dir folder (made if missing), opened for writing; a closed stream
+// when --trace-dir is absent. A folder or file that cannot be written throws OptionError.
+std::ofstream open_trace_file(const Options& options, const std::string& file_name);
 
 }  // namespace hexplore::service

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <sstream>
 
 #include "common/core/clock.h"
@@ -57,13 +56,9 @@ void PlanningService::setup(service::ServiceContext& context) {
   for (const auto& r : team.robots) positions_[r.id] = r.start_position_m;
 
   const service::Options opts(context.arguments());
-  if (const std::string dir = opts.text("trace-dir"); !dir.empty()) {
-    const std::string path = dir + "/planning-" + robot_id_ + ".jsonl";
-    std::error_code ignored;  // a failure shows as the open below failing
-    std::filesystem::create_directories(dir, ignored);
-    trace_.open(path);
-    if (!trace_) throw service::OptionError("trace-dir", "cannot write " + path);
-    trace_dir_ = dir;
+  trace_ = service::open_trace_file(opts, "planning-" + robot_id_ + ".jsonl");
+  if (trace_.is_open()) {
+    trace_dir_ = opts.text("trace-dir");
     trace_graph_period_s_ = opts.number("trace-graph-period-s", 0.0, 0.0);
   }
   mission_ = service::MissionState(opts.flag("wait-for-start", false));

@@ -1,7 +1,6 @@
 #include "services/safety/safety_service.h"
 
 #include <chrono>
-#include <filesystem>
 
 #include "common/core/clock.h"
 #include "common/core/config_error.h"
@@ -84,13 +83,7 @@ void SafetyService::setup(service::ServiceContext& context) {
   const service::Options opts(context.arguments());
   sim_clock_ = opts.choice("decision-clock", sim_clock_ ? "sim" : "wall", {"sim", "wall"}) == "sim";
   mission_ = service::MissionState(opts.flag("wait-for-start", false));
-  if (const std::string dir = opts.text("trace-dir"); !dir.empty()) {
-    const std::string path = dir + "/safety-" + robot_id_ + ".jsonl";
-    std::error_code ignored;  // a failure shows as the open below failing
-    std::filesystem::create_directories(dir, ignored);
-    trace_.open(path);
-    if (!trace_) throw service::OptionError("trace-dir", "cannot write " + path);
-  }
+  trace_ = service::open_trace_file(opts, "safety-" + robot_id_ + ".jsonl");
 
   auto& m = context.metrics();
   const metrics::Labels labels{{"robot", robot_id_}};

@@ -72,30 +72,24 @@ def unapproved_moves(lines):
 
 
 def close_calls(traces, below):
-    """Per robot pair: stretches [t0, t1] with the nearest believed distance in each."""
-    calls = collections.defaultdict(list)  # (robot, peer) -> [[t0, t1, min distance]]
+    """Stretches [t0, t1] per robot pair in which either robot believed the other nearer than
+    `below`, with the nearest distance believed; sorted by start."""
+    found = collections.defaultdict(list)  # (robot, peer) sorted -> [(t, distance)]
     for robot, lines in traces.items():
         for d in lines:
             for peer in d.get("peers", []):
-                if peer["distance"] >= below:
-                    continue
-                pair = tuple(sorted((robot, peer["id"])))
-                spans = calls[pair]
-                if spans and d["t"] - spans[-1][1] <= GAP_S:
-                    spans[-1][1] = max(spans[-1][1], d["t"])
-                    spans[-1][2] = min(spans[-1][2], peer["distance"])
-                else:
-                    spans.append([d["t"], d["t"], peer["distance"]])
-    merged = []
-    for pair, spans in calls.items():
-        spans.sort()
-        for span in spans:
-            if merged and merged[-1][0] == pair and span[0] - merged[-1][2] <= GAP_S:
-                merged[-1][2] = max(merged[-1][2], span[1])
-                merged[-1][3] = min(merged[-1][3], span[2])
+                if peer["distance"] < below:
+                    found[tuple(sorted((robot, peer["id"])))].append((d["t"], peer["distance"]))
+    calls = []  # [pair, t0, t1, nearest]
+    for pair, events in found.items():
+        events.sort()
+        for t, distance in events:
+            if calls and calls[-1][0] == pair and t - calls[-1][2] <= GAP_S:
+                calls[-1][2] = t
+                calls[-1][3] = min(calls[-1][3], distance)
             else:
-                merged.append([pair, span[0], span[1], span[2]])
-    return sorted(merged, key=lambda c: c[1])
+                calls.append([pair, t, t, distance])
+    return sorted(calls, key=lambda c: c[1])
 
 
 def main():
