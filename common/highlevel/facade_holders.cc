@@ -25,8 +25,10 @@ FacadeHolders incomplete_facade_holders(const MapFusion& fusion, const std::stri
   std::vector<const Contribution*> teammates;
   for (const std::string& source : fusion.sources())
     if (source != own) teammates.push_back(fusion.contribution(source));
-  for (const auto& [key, sv] : fusion.map().supervoxels()) {
-    if (!sv.facade() || sv.covered) continue;
+  for (const auto& entry : fusion.map().supervoxels()) {
+    // A named copy: clang 14 (the fuzz build) refuses lambdas that capture a structured binding.
+    const uint64_t key = entry.first;
+    if (!entry.second.facade() || entry.second.covered) continue;
     const bool held_here = mine != nullptr && mine->supervoxels.count(key) != 0;
     const bool held_elsewhere =
         std::any_of(teammates.begin(), teammates.end(), [&](const Contribution* c) { return c->supervoxels.count(key) != 0; });
