@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
       ra.self = 0;
       rb.self = 2;
       const PlanResult a1 = pa->plan(ra), b1 = pb->plan(rb);
-      if (!pa->shares_route()) {
+      if (pa->route_sharing() == RouteSharing::kNone) {
         std::printf("  %-11s %.2f (shares no route; clusters %d / %d)\n", name.c_str(), agreement(a1, b1), a1.clusters,
                     b1.clusters);
         continue;

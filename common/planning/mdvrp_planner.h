@@ -25,6 +25,7 @@ class MdvrpPlanner : public ConfiguredPlanner {
  public:
   std::string name() const override { return "mdvrp+"; }
   PlanResult plan(const PlanRequest& request) override;
+  RouteSharing route_sharing() const override { return RouteSharing::kEverySolution; }
 };
 
 }  // namespace hexplore::planning

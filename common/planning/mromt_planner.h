@@ -21,7 +21,7 @@ class MromtPlanner : public ConfiguredPlanner {
  public:
   std::string name() const override { return "mromt+"; }
   PlanResult plan(const PlanRequest& request) override;
-  bool shares_route() const override { return false; }
+  RouteSharing route_sharing() const override { return RouteSharing::kNone; }
 };
 
 }  // namespace hexplore::planning

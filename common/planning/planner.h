@@ -11,6 +11,19 @@
 
 namespace hexplore::planning {
 
+// What the teammates make of a planner's team solution (team/plan sequences).
+enum class RouteSharing {
+  // Nothing: planners that coordinate only through identical inputs (MROMT+, TSPGA+). The
+  // service publishes the solution without sequences.
+  kNone,
+  // Every shared solution is an input (MDVRP+ projects each onto its views for a warm start):
+  // every new solution travels.
+  kEverySolution,
+  // Only the reference that select_reference chooses (hexplore and its ablations): a solution
+  // no teammate would choose need not travel (reference_worth_sending).
+  kReferenceOnly,
+};
+
 struct PlannerContext {
   TeamCapabilities team;
   PlannerOptions options;
@@ -25,10 +38,8 @@ class Planner {
   virtual void deactivate() {}
   // One planning round; deterministic for the same request, map and options.
   virtual PlanResult plan(const PlanRequest& request) = 0;
-  // Whether the team solution travels to the teammates as the exploration route (team/plan
-  // sequences). Planners that coordinate only through identical inputs (MROMT+, TSPGA+)
-  // share nothing of it; the service then publishes the solution without sequences.
-  virtual bool shares_route() const { return true; }
+  // How the team solution travels to the teammates as the exploration route.
+  virtual RouteSharing route_sharing() const { return RouteSharing::kReferenceOnly; }
 };
 
 }  // namespace hexplore::planning

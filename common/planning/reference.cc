@@ -34,4 +34,16 @@ std::optional<size_t> select_reference(const std::vector<ReferenceSolution>& sol
   return best;
 }
 
+bool reference_worth_sending(const std::vector<ReferenceSolution>& teammates, const ReferenceSolution& mine,
+                             const std::optional<ReferenceSolution>& held) {
+  std::vector<ReferenceSolution> candidates = teammates;
+  const auto chosen_with = [&](const ReferenceSolution& own) {
+    candidates.push_back(own);
+    const bool chosen = select_reference(candidates) == candidates.size() - 1;
+    candidates.pop_back();
+    return chosen;
+  };
+  return chosen_with(mine) || (held && chosen_with(*held));
+}
+
 }  // namespace hexplore::planning

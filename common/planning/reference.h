@@ -35,4 +35,12 @@ struct ReferenceSolution {
 // nullopt when there is no solution.
 std::optional<size_t> select_reference(const std::vector<ReferenceSolution>& solutions);
 
+// Whether a robot's new solution `mine` need travel to teammates that use nothing but
+// select_reference's choice. They hold `teammates` (each robot's last solution sent) and
+// `held`, the last one this robot sent (none yet: nullopt). Should neither `mine` nor `held`
+// be chosen among them, every teammate chooses among `teammates` with or without `mine`:
+// it changes nothing there. Else it must go, to be chosen or to replace `held`.
+bool reference_worth_sending(const std::vector<ReferenceSolution>& teammates, const ReferenceSolution& mine,
+                             const std::optional<ReferenceSolution>& held);
+
 }  // namespace hexplore::planning

@@ -22,7 +22,7 @@ class TspgaPlanner : public ConfiguredPlanner {
  public:
   std::string name() const override { return "tspga+"; }
   PlanResult plan(const PlanRequest& request) override;
-  bool shares_route() const override { return false; }
+  RouteSharing route_sharing() const override { return RouteSharing::kNone; }
 };
 
 }  // namespace hexplore::planning

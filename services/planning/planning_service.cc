@@ -355,7 +355,7 @@ void PlanningService::replan(const std::string& reason) {
   v1::TeamSolution solution = planning::to_proto(res);
   // Our own solution is a reference candidate next round, like the teammates', at the precision
   // they decode it with (the radio rounds coordinates), so that every robot weighs the same numbers.
-  if (active_->shares_route()) {
+  if (active_->route_sharing() != planning::RouteSharing::kNone) {
     const transport::SocketOptions wire = context_->socket_options();
     shared_[robot_id_] = planning::reference_from_proto(
         radio::as_received(solution, wire.codecs.get(), wire.roster.get()), robot_id_);
@@ -391,10 +391,10 @@ void PlanningService::replan(const std::string& reason) {
   }
 
   auto& pub = context_->publisher();
-  // Planners that share no route (MROMT+, TSPGA+) send the solution without its sequences:
-  // the given-up targets below still travel, so every robot agrees on what is left (what
-  // changed lately, and now and then the whole set: planning::GiveUpSharing).
-  if (!active_->shares_route()) solution.clear_sequences();
+  // Sequences travel only where a teammate makes something of them (planning::RouteSharing).
+  // Without them the message still carries the given-up targets below, so every robot agrees on
+  // what is left (what changed lately, and now and then the whole set: planning::GiveUpSharing).
+  if (!sequences_worth_sending()) solution.clear_sequences();
   // The same solution again (an idle robot replans every second) waits for eta_t.
   if (solution_gate_.should_send(solution, give_up_sharing_.has_news(ledger_), core::ns_to_s(now_ns()))) {
     for (const auto& [key, voxels] : give_up_sharing_.next(ledger_)) {
@@ -402,6 +402,7 @@ void PlanningService::replan(const std::string& reason) {
       solution.add_given_up_voxel_counts(uint32_t(std::max(0, voxels)));
     }
     pub.publish(std::string(topics::kTeamPlan), solution);
+    if (solution.sequences_size() > 0) held_by_teammates_ = shared_.at(robot_id_);
   }
   pub.publish(topics::route(robot_id_), planning::route_to_proto(round_, route));
   follower_->set_path_species(res.path_species >= 0 ? res.path_species : species_index_);
@@ -409,6 +410,18 @@ void PlanningService::replan(const std::string& reason) {
   // Traced after the follower merged the route: the trace shows where the robot heads next.
   if (trace_.is_open()) write_trace(reason, req, res);
   follow_route();  // the path to the first view at once
+}
+
+bool PlanningService::sequences_worth_sending() const {
+  switch (active_->route_sharing()) {
+    case planning::RouteSharing::kNone: return false;
+    case planning::RouteSharing::kEverySolution: return true;
+    case planning::RouteSharing::kReferenceOnly: break;
+  }
+  std::vector<planning::ReferenceSolution> teammates;
+  for (const auto& [source, s] : shared_)
+    if (source != robot_id_) teammates.push_back(s);
+  return planning::reference_worth_sending(teammates, shared_.at(robot_id_), held_by_teammates_);
 }
 
 void PlanningService::write_trace(const std::string& reason, const planning::PlanRequest& req,

@@ -31,6 +31,7 @@
 #include "common/planning/give_up_sharing.h"
 #include "common/planning/passing_observer.h"
 #include "common/planning/planner_registry.h"
+#include "common/planning/reference.h"
 #include "common/planning/route_follower.h"
 #include "common/service/mission_state.h"
 #include "common/service/service.h"
@@ -69,6 +70,8 @@ class PlanningService : public service::Service {
   int64_t now_ns() const;  // sim time when the driver stamps it, else the loop's clock
   v1::OpenTargetsReport open_targets_report() const;
   // One JSON line per round into --trace-dir/planning-<robot>.jsonl (per-round traces).
+  // Whether this round's team solution goes out with its sequences (planning::RouteSharing).
+  bool sequences_worth_sending() const;
   void write_trace(const std::string& reason, const planning::PlanRequest& req, const planning::PlanResult& res);
   // The vertices our paths keep off besides those the follower was blocked at: those within
   // reach of the body of a teammate gone silent (its services died; the robot still stands
@@ -95,6 +98,8 @@ class PlanningService : public service::Service {
   bool snapshot_pending_ = false;
   std::map<std::string, Eigen::Vector3d> positions_;  // robot id -> last known position
   std::map<std::string, planning::ReferenceSolution> shared_;  // source robot -> solution
+  // Our solution as the teammates hold it: the last one sent with its sequences.
+  std::optional<planning::ReferenceSolution> held_by_teammates_;
   bool peer_finished_ = false;                        // a teammate went idle (route done)
   std::map<std::string, int> peer_motion_;            // robot id -> last v1::MotionState
   core::Liveness teammates_{core::LivenessParams{}.planning_team_s};  // heard from by team/pose

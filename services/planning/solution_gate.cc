@@ -15,12 +15,15 @@ std::string SolutionGate::signature(const v1::TeamSolution& solution) {
 }
 
 bool SolutionGate::should_send(const v1::TeamSolution& solution, bool news, double now_s) {
-  std::string sig = signature(solution);
-  const bool send = !sent_any_ || news || sig != sent_signature_ || now_s - sent_at_s_ >= refresh_s_;
+  const bool with_sequences = solution.sequences_size() > 0;
+  std::string sig = with_sequences ? signature(solution) : std::string();
+  const bool changed = solution.planner() != sent_planner_ || (with_sequences && sig != sent_signature_);
+  const bool send = !sent_any_ || news || changed || now_s - sent_at_s_ >= refresh_s_;
   if (send) {
     sent_any_ = true;
     sent_at_s_ = now_s;
-    sent_signature_ = std::move(sig);
+    sent_planner_ = solution.planner();
+    if (with_sequences) sent_signature_ = std::move(sig);
   }
   return send;
 }

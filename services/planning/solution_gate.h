@@ -6,6 +6,8 @@
 // A solution is sent when its planner or any robot's cluster sequence differs from the last
 // one sent, when it has given-up changes to pass on, or when `refresh_s` (eta_t) has passed
 // since the last one, so that teammates still get its route lengths and round now and then.
+// A solution without sequences (none worth sending: planning::RouteSharing) changes nothing
+// the teammates hold of the last sequences sent, so it is compared by its planner only.
 
 #include <cstdint>
 #include <string>
@@ -28,7 +30,8 @@ class SolutionGate {
   double refresh_s_;
   bool sent_any_ = false;
   double sent_at_s_ = 0.0;
-  std::string sent_signature_;
+  std::string sent_planner_;
+  std::string sent_signature_;  // of the last solution sent with sequences
 };
 
 }  // namespace hexplore::planning_service

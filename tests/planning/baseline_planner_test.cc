@@ -45,10 +45,11 @@ TEST(Baselines, RegisteredAndNamed) {
     ASSERT_TRUE(reg.contains(name)) << name;
     EXPECT_EQ(reg.create(name)->name(), name);
   }
-  EXPECT_TRUE(reg.create("mdvrp+")->shares_route());
-  EXPECT_FALSE(reg.create("mromt+")->shares_route());
-  EXPECT_FALSE(reg.create("tspga+")->shares_route());
-  EXPECT_TRUE(reg.create("hexplore")->shares_route());
+  EXPECT_EQ(reg.create("mdvrp+")->route_sharing(), RouteSharing::kEverySolution);
+  EXPECT_EQ(reg.create("mromt+")->route_sharing(), RouteSharing::kNone);
+  EXPECT_EQ(reg.create("tspga+")->route_sharing(), RouteSharing::kNone);
+  EXPECT_EQ(reg.create("hexplore")->route_sharing(), RouteSharing::kReferenceOnly);
+  EXPECT_EQ(reg.create("no-assign")->route_sharing(), RouteSharing::kReferenceOnly);
 }
 
 TEST(Baselines, MdvrpGivesEveryViewOnceToAMatchingRobotThatReachesIt) {

@@ -29,5 +29,18 @@ TEST(Reference, MinMaxRuleIndependentOfOrder) {
   EXPECT_FALSE(select_reference({}).has_value());
 }
 
+TEST(Reference, ASolutionTravelsWhenTeammatesWouldChooseIt) {
+  const std::vector<ReferenceSolution> teammates = {solution("b", 7, {30, 31}), solution("c", 5, {20, 40})};
+  // Alone, a robot's solution is every teammate's choice.
+  EXPECT_TRUE(reference_worth_sending({}, solution("a", 1, {50}), std::nullopt));
+  // Shorter than b's longest route: chosen.
+  EXPECT_TRUE(reference_worth_sending(teammates, solution("a", 9, {25, 29}), std::nullopt));
+  // Longer, and nothing of a's held: every teammate keeps choosing b.
+  EXPECT_FALSE(reference_worth_sending(teammates, solution("a", 9, {25, 35}), std::nullopt));
+  EXPECT_FALSE(reference_worth_sending(teammates, solution("a", 9, {25, 35}), solution("a", 8, {40, 10})));
+  // The teammates hold an older solution of a's that they choose: the new one must replace it.
+  EXPECT_TRUE(reference_worth_sending(teammates, solution("a", 9, {25, 35}), solution("a", 8, {12, 10})));
+}
+
 }  // namespace
 }  // namespace hexplore::planning

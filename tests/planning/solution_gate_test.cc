@@ -39,5 +39,23 @@ TEST(SolutionGate, ANewAssignmentPlannerOrGivenUpChangeGoesAtOnce) {
   EXPECT_FALSE(gate.should_send(moved, false, 6.0));
 }
 
+// A robot whose solution no teammate would choose sends it without sequences (RouteSharing::
+// kReferenceOnly): what the teammates hold is still the last sequences sent.
+TEST(SolutionGate, WithoutSequencesOnlyThePlannerNewsAndRefreshCount) {
+  SolutionGate gate(10.0);
+  ASSERT_TRUE(gate.should_send(solution("hexplore", {1, 2}), false, 0.0));
+  v1::TeamSolution bare;
+  bare.set_planner("hexplore");
+  EXPECT_FALSE(gate.should_send(bare, false, 1.0));
+  EXPECT_TRUE(gate.should_send(bare, true, 2.0));  // given-up news
+  EXPECT_FALSE(gate.should_send(bare, false, 3.0));
+  // The sequences the teammates hold are still {1, 2}: the same again waits, new ones go.
+  EXPECT_FALSE(gate.should_send(solution("hexplore", {1, 2}), false, 4.0));
+  EXPECT_TRUE(gate.should_send(solution("hexplore", {2}), false, 5.0));
+  bare.set_planner("no-mnss");
+  EXPECT_TRUE(gate.should_send(bare, false, 6.0));  // planner switched
+  EXPECT_TRUE(gate.should_send(bare, false, 16.0));  // refresh
+}
+
 }  // namespace
 }  // namespace hexplore::planning_service
