@@ -33,9 +33,11 @@ struct SourcedUpdate {
 // A published supervoxel is re-sent when a discrete attribute (coverage, traversal
 // requirement, class) changes or its geometry drifts past these bounds.
 struct PublishTolerance {
-  // Two thirds of the 0.15 m map resolution: most re-sends were centres creeping by a few
-  // centimetres as voxels joined (77% of them on the multi-building mission at 5 cm).
-  double center_m = 0.10;
+  // One voxel (the hlmap service passes params.map_resolution_m): a centre closer than that to
+  // where it was says nothing the map can resolve. Re-sends were mostly centres creeping as
+  // voxels joined (77 % of them on the multi-building mission at 5 cm; at 10 cm still 47 % on
+  // the default one, stop 53).
+  double center_m = 0.15;
   double normal_deg = 5.0;
   double voxel_count_ratio = 0.2;
 };

@@ -50,7 +50,9 @@ void HlmapService::setup(service::ServiceContext& context) {
   const auto started_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
       std::chrono::system_clock::now().time_since_epoch());
   const uint64_t incarnation = context.lockstep() ? 1 : static_cast<uint64_t>(started_ms.count());
-  log_ = std::make_unique<highlevel::ContributionLog>(robot_id_, incarnation);
+  highlevel::PublishTolerance tolerance;
+  tolerance.center_m = team.params.map_resolution_m;
+  log_ = std::make_unique<highlevel::ContributionLog>(robot_id_, incarnation, tolerance);
   fusion_ = std::make_unique<highlevel::MapFusion>(levels_);
   repair_timeout_s_ = std::max(0.5, 2.0 * team.params.eta_c_s);
   sync_ = std::make_unique<highlevel::PeerSync>(robot_id_, repair_timeout_s_);
