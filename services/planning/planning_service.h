@@ -69,9 +69,9 @@ class PlanningService : public service::Service {
   planning::DriveState drive_state() const;
   int64_t now_ns() const;  // sim time when the driver stamps it, else the loop's clock
   v1::OpenTargetsReport open_targets_report() const;
-  // One JSON line per round into --trace-dir/planning-<robot>.jsonl (per-round traces).
   // Whether this round's team solution goes out with its sequences (planning::RouteSharing).
   bool sequences_worth_sending() const;
+  // One JSON line per round into --trace-dir/planning-<robot>.jsonl (per-round traces).
   void write_trace(const std::string& reason, const planning::PlanRequest& req, const planning::PlanResult& res);
   // The vertices our paths keep off besides those the follower was blocked at: those within
   // reach of the body of a teammate gone silent (its services died; the robot still stands
