@@ -21,22 +21,25 @@ bool GiveUpLedger::failed(uint64_t key, int voxels) {
 bool GiveUpLedger::decide(uint64_t key, const Record& r, int voxels) {
   if (int(r.spots.size()) < rules_.views && r.attempts < rules_.attempts) return false;
   if (given_up(key, voxels)) return false;  // already
-  set_given_up(key, voxels);
+  set_given_up(key, voxels, true);
   records_.erase(key);  // if it comes back, it gets a fresh set of tries
   return true;
 }
 
 void GiveUpLedger::merge(uint64_t key, int voxels) {
   const auto it = given_up_.find(key);
-  if (it == given_up_.end() || voxels > it->second.voxels) set_given_up(key, voxels);
+  if (it == given_up_.end() || voxels > it->second.voxels) set_given_up(key, voxels, false);
 }
 
-void GiveUpLedger::set_given_up(uint64_t key, int voxels) { given_up_[key] = GivenUp{voxels, ++revision_}; }
+void GiveUpLedger::set_given_up(uint64_t key, int voxels, bool mine) {
+  given_up_[key] = GivenUp{voxels, ++revision_, mine};
+  if (mine) own_revision_ = revision_;
+}
 
-std::vector<std::pair<uint64_t, int>> GiveUpLedger::given_up_since(uint64_t revision) const {
+std::vector<std::pair<uint64_t, int>> GiveUpLedger::given_up_since(uint64_t revision, bool mine_only) const {
   std::vector<std::pair<uint64_t, int>> out;
   for (const auto& [key, entry] : given_up_)
-    if (entry.revision > revision) out.emplace_back(key, entry.voxels);
+    if (entry.revision > revision && (entry.mine || !mine_only)) out.emplace_back(key, entry.voxels);
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -51,8 +51,11 @@ class GiveUpLedger {
   // teammate sends is not echoed back.
   uint64_t revision() const { return revision_; }
   // (key, voxel count when given up) of the targets changed after `revision`, by key;
-  // given_up_since(0) is the whole set.
-  std::vector<std::pair<uint64_t, int>> given_up_since(uint64_t revision) const;
+  // given_up_since(0) is the whole set. `mine_only`: only those whose last change was this
+  // robot's own decision, not a teammate's (merge).
+  std::vector<std::pair<uint64_t, int>> given_up_since(uint64_t revision, bool mine_only = false) const;
+  // The revision of this robot's latest own change (0: none yet).
+  uint64_t own_revision() const { return own_revision_; }
   // Whether the target stayed incomplete after an observation from within `distinct_m` of
   // `spot`. A second look from there sees what the first saw (the data of the default team:
   // 97 % of such repeats left the target open), so the next view of it stands elsewhere.
@@ -69,16 +72,18 @@ class GiveUpLedger {
   };
   bool decide(uint64_t key, const Record& r, int voxels);
   bool near_a_spot(const Record& r, const Eigen::Vector3d& spot) const;  // within distinct_m of one of its spots
-  void set_given_up(uint64_t key, int voxels);
+  void set_given_up(uint64_t key, int voxels, bool mine);
 
   struct GivenUp {
     int voxels = 0;         // the target's voxel count when given up
     uint64_t revision = 0;  // when this entry last changed
+    bool mine = false;      // that change was this robot's decision
   };
   GiveUpRules rules_;
   std::unordered_map<uint64_t, Record> records_;
   std::unordered_map<uint64_t, GivenUp> given_up_;
   uint64_t revision_ = 0;
+  uint64_t own_revision_ = 0;
 };
 
 }  // namespace hexplore::planning

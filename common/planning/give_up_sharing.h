@@ -10,8 +10,10 @@
 // them are lost: 10^-3 at 10 % loss with three). The whole set goes when the owner asks for it
 // (whole_set_next: a teammate came back from a silence, or its planner restarted) and every
 // `full_every`-th message, for what loss took all the same.
-// Changes that arrived from a teammate are passed on like one's own: with a radio range
-// shorter than the site, that is how they reach robots the source cannot.
+// With a radio range shorter than the site (`relay`), changes that arrived from a teammate are
+// passed on like one's own: that is how they reach robots the source cannot. Without one every
+// teammate hears the source itself, and passing them on multiplied the given-up traffic by the
+// team's size (a robot that was silent still gets the whole set when it is heard again).
 
 #include <cstdint>
 #include <deque>
@@ -24,7 +26,7 @@ namespace hexplore::planning {
 
 class GiveUpSharing {
  public:
-  explicit GiveUpSharing(int window = 3, int full_every = 100);
+  explicit GiveUpSharing(int window = 3, int full_every = 100, bool relay = false);
 
   // The (key, voxel count) entries of the next message, by key; call once per message sent.
   std::vector<std::pair<uint64_t, int>> next(const GiveUpLedger& ledger);
@@ -37,6 +39,7 @@ class GiveUpSharing {
  private:
   int window_;
   int full_every_;
+  bool relay_;
   uint64_t messages_ = 0;
   bool whole_next_ = false;
   std::deque<uint64_t> sent_at_;  // the ledger's revision at each of the last `window` messages

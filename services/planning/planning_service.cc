@@ -71,6 +71,8 @@ void PlanningService::setup(service::ServiceContext& context) {
       execution_options(opts, *species, capabilities_.species[size_t(species_index_)], options_);
   exec.follow.record_judgements = trace_.is_open();
   ledger_ = planning::GiveUpLedger(exec.give_up);
+  // Teammates' given-up targets are passed on only where some robot may not hear their source.
+  give_up_sharing_ = planning::GiveUpSharing(3, 100, /*relay=*/team.transport.radio.range_m > 0.0);
   follower_ = std::make_unique<planning::RouteFollower>(exec.follow, species_index_);
   passing_ = std::make_unique<planning::PassingObserver>(exec.passing, options_);
   peer_stuck_s_ = opts.positive("peer-stuck-s", 30.0);

@@ -75,9 +75,11 @@ TEST(GiveUpLedger, EveryChangeTakesARevisionAndARepeatedMergeNone) {
   EXPECT_EQ(l.given_up_count(), 2u);
 }
 
+// These two pass teammates' changes on (`relay`, as on a radio with a range), so merge() stands
+// for any change.
 TEST(GiveUpSharing, AChangeTravelsInWindowMessagesAndTheWholeSetNowAndThen) {
   GiveUpLedger l;
-  GiveUpSharing share(/*window=*/2, /*full_every=*/6);
+  GiveUpSharing share(/*window=*/2, /*full_every=*/6, /*relay=*/true);
   l.merge(1, 10);
   EXPECT_EQ(share.next(l), (Entries{{1, 10}}));  // message 0: whole
   l.merge(2, 10);
@@ -107,7 +109,7 @@ TEST(GiveUpSharing, OnRequestTheNextMessageCarriesTheWholeSetOnce) {
 // carry: a message may be skipped (SolutionGate) only when it would not.
 TEST(GiveUpSharing, NewsUntilAChangeHasTravelledInWindowMessages) {
   GiveUpLedger l;
-  GiveUpSharing share(/*window=*/2, /*full_every=*/1000);
+  GiveUpSharing share(/*window=*/2, /*full_every=*/1000, /*relay=*/true);
   EXPECT_FALSE(share.has_news(l));  // nothing given up yet
   l.merge(1, 10);
   EXPECT_TRUE(share.has_news(l));
@@ -124,6 +126,26 @@ TEST(GiveUpSharing, NewsUntilAChangeHasTravelledInWindowMessages) {
   EXPECT_FALSE(share.has_news(l));
   share.whole_set_next();
   EXPECT_TRUE(share.has_news(l));
+}
+
+// Where every teammate hears the source, a teammate's change is not passed on, except in the
+// whole set; it is no news either.
+TEST(GiveUpSharing, WithoutRelayOnlyOwnChangesTravel) {
+  GiveUpLedger l;
+  GiveUpSharing share(/*window=*/1, /*full_every=*/1000);
+  l.observed(1, {0, 0, 0}, 10);  // own: given up at once (one view)
+  EXPECT_EQ(share.next(l), (Entries{{1, 10}}));  // message 0: whole
+  l.merge(2, 10);                                // a teammate's
+  EXPECT_FALSE(share.has_news(l));
+  EXPECT_EQ(share.next(l), (Entries{}));
+  l.observed(3, {0, 0, 0}, 10);
+  EXPECT_TRUE(share.has_news(l));
+  EXPECT_EQ(share.next(l), (Entries{{3, 10}}));
+  l.merge(3, 20);  // a teammate raised our target's count: now its change, not ours
+  EXPECT_FALSE(share.has_news(l));
+  EXPECT_EQ(share.next(l), (Entries{}));
+  share.whole_set_next();
+  EXPECT_EQ(share.next(l), (Entries{{1, 10}, {2, 10}, {3, 20}}));
 }
 
 TEST(GiveUpSharing, TeammatesThatHearEveryMessageEndWithTheSameSetAndStopSending) {
