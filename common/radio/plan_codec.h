@@ -1,9 +1,9 @@
 #pragma once
 // team/plan on the radio: a robot's team solution (paper: the reference solution) with its
 // cluster sequences and the team's given-up targets. Cluster ids and given-up keys are
-// supervoxel keys as seed-cell steps (key_steps.h); cluster centres are centimetre steps from
-// their cluster id's seed cell; route lengths centimetres; robots roster slots; fitness float.
-// Centres and lengths lose less than a centimetre. Not carried: planning_time_s (a measured
+// supervoxel keys as seed-cell steps (key_steps.h); cluster centres are decimetre steps from
+// their cluster id's seed cell (within 5 cm); route lengths centimetres; robots roster slots;
+// fitness float. Not carried: planning_time_s (a measured
 // compute time, which would make the traffic of reproducible runs differ; the station has it
 // from the planners' statuses), so it decodes as zero.
 
