@@ -6,6 +6,7 @@
 #include "common/highlevel/supervoxel.h"
 #include "common/highlevel/wire_precision.h"
 #include "common/radio/key_steps.h"
+#include "common/radio/map_dictionary.h"
 #include "common/radio/wire_units.h"
 #include "hexplore/v1/hlmap.pb.h"
 
@@ -154,6 +155,8 @@ bool decode_fields(ByteReader& r, double eta_s_m, MapFields m) {
 const std::string& MapCodec::type() const {
   return snapshot_ ? v1::MapSnapshot::descriptor()->full_name() : v1::MapIncrement::descriptor()->full_name();
 }
+
+const transport::CompressionDictionary* MapCodec::dictionary() const { return &map_dictionary(); }
 
 void MapCodec::encode(const google::protobuf::MessageLite& message, const transport::Roster* roster,
                       std::string& out) const {

@@ -28,6 +28,8 @@ class MapCodec : public transport::PayloadCodec {
               std::string& out) const override;
   bool decode(std::string_view data, const transport::Roster* roster,
               google::protobuf::MessageLite& message) const override;
+  // map_dictionary(): a one-second increment is too small for zstd to find much alone.
+  const transport::CompressionDictionary* dictionary() const override;
 
  private:
   bool snapshot_;

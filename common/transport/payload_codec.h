@@ -12,6 +12,7 @@
 
 #include <google/protobuf/message_lite.h>
 
+#include "common/transport/compression.h"
 #include "common/transport/roster.h"
 
 namespace hexplore::transport {
@@ -27,6 +28,8 @@ class PayloadCodec {
   // valid compact form. Must not trust anything in `data`: lengths, counts and indices are
   // checked before use.
   virtual bool decode(std::string_view data, const Roster* roster, google::protobuf::MessageLite& message) const = 0;
+  // The dictionary this type's compact form is compressed with on the radio (null: plain zstd).
+  virtual const CompressionDictionary* dictionary() const { return nullptr; }
 };
 
 // The codecs a socket applies, by wire type id.

@@ -19,7 +19,11 @@ uint8_t encode_payload(const google::protobuf::MessageLite& message, uint16_t ty
   // Only the radio is worth the CPU: robot-local payloads stay as they are.
   if (team_topic && options.compress_min_bytes > 0 && out.size() >= options.compress_min_bytes) {
     std::string packed;
-    compress(out, options.compress_level, packed);
+    const CompressionDictionary* dictionary = codec != nullptr ? codec->dictionary() : nullptr;
+    if (dictionary != nullptr)
+      dictionary->compress(out, options.compress_level, packed);
+    else
+      compress(out, options.compress_level, packed);
     if (!packed.empty() && packed.size() < out.size()) {
       out.swap(packed);
       flags |= kPayloadCompressed;
@@ -28,13 +32,22 @@ uint8_t encode_payload(const google::protobuf::MessageLite& message, uint16_t ty
   return flags;
 }
 
-bool unpack_payload(std::string_view data, uint8_t flags, const SocketOptions& options, std::string& scratch,
-                    std::string_view& out) {
+bool unpack_payload(std::string_view data, uint8_t flags, uint16_t type, const SocketOptions& options,
+                    std::string& scratch, std::string_view& out) {
   if ((flags & kPayloadCompressed) == 0) {
     out = data;
     return true;
   }
-  if (!decompress(data, static_cast<size_t>(options.max_message_bytes), scratch)) return false;
+  const size_t max_size = static_cast<size_t>(options.max_message_bytes);
+  if (frame_dictionary_id(data) != 0) {
+    // Compressed with the dictionary of its type's codec; a frame of any other dictionary (a
+    // teammate built with another one) does not decompress.
+    const PayloadCodec* codec = (flags & kPayloadCodec) && options.codecs ? options.codecs->find(type) : nullptr;
+    const CompressionDictionary* dictionary = codec != nullptr ? codec->dictionary() : nullptr;
+    if (dictionary == nullptr || !dictionary->decompress(data, max_size, scratch)) return false;
+  } else if (!decompress(data, max_size, scratch)) {
+    return false;
+  }
   out = scratch;
   return true;
 }

@@ -17,10 +17,11 @@ namespace hexplore::transport {
 uint8_t encode_payload(const google::protobuf::MessageLite& message, uint16_t type, bool team_topic,
                        const SocketOptions& options, std::string& out);
 
-// The payload bytes to parse: `data` itself, or its decompressed form in `scratch`. False when
-// compressed data is corrupt or would exceed max_message_bytes.
-bool unpack_payload(std::string_view data, uint8_t flags, const SocketOptions& options, std::string& scratch,
-                    std::string_view& out);
+// The payload bytes to parse: `data` itself, or its decompressed form in `scratch` (with the
+// dictionary of type `type`'s codec where the frame names one). False when compressed data is
+// corrupt, would exceed max_message_bytes, or names a dictionary this socket does not hold.
+bool unpack_payload(std::string_view data, uint8_t flags, uint16_t type, const SocketOptions& options,
+                    std::string& scratch, std::string_view& out);
 
 // Parses unpacked payload bytes into `message` (type id `type`): the codec's form when
 // `flags` has kPayloadCodec, else protobuf. False when they do not parse.

@@ -5,6 +5,7 @@
 #include "common/core/clock.h"
 #include "common/core/endpoints.h"
 #include "common/core/log.h"
+#include "common/transport/payload_samples.h"
 #include "common/transport/payload_wire.h"
 #include "common/transport/socket_util.h"
 #include "common/transport/topics.h"
@@ -79,6 +80,7 @@ bool Publisher::publish_message(std::string_view topic, std::string_view payload
   zmq::message_t payload;
   if (team) {
     payload_flags = encode_payload(message, type, team, options_, payload_buffer_);
+    sample_team_payload(message, type, payload_type, options_);
     payload = zmq::message_t(payload_buffer_.data(), payload_buffer_.size());
   } else {
     // Robot-local payloads (scans are hundreds of kilobytes) go straight into the frame.

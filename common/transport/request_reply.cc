@@ -234,7 +234,8 @@ void Requester::handle(std::vector<zmq::message_t>& frames) {
   if (!radio_delivers(header, topic)) return;
   decoded.header.set_payload_type(it->second.reply_type);
   std::string_view payload;
-  if (!unpack_payload(frames[2].to_string_view(), decoded.payload_flags, options_, scratch_, payload)) {
+  if (!unpack_payload(frames[2].to_string_view(), decoded.payload_flags, decoded.type_id, options_, scratch_,
+                      payload)) {
     drop(accounting_, topic, DropReason::kMalformed, "compressed reply is corrupt or too large");
     return;  // times out
   }

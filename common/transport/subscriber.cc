@@ -127,7 +127,7 @@ void Subscriber::handle(std::vector<zmq::message_t>& frames) {
     if (!type_matched) {
       type_matched = true;
       s.decoded.header.set_payload_type(h.type);
-      if (!unpack_payload(frames[2].to_string_view(), s.decoded.payload_flags, s.options, s.scratch, payload)) {
+      if (!unpack_payload(frames[2].to_string_view(), s.decoded.payload_flags, type, s.options, s.scratch, payload)) {
         drop(s.accounting, topic, DropReason::kMalformed, "compressed payload is corrupt or too large");
         return;
       }

@@ -35,8 +35,8 @@ bool decode_payload(const uint8_t* data, size_t size, Message& out) {
   const transport::SocketOptions& options = team_socket_options();
   std::string scratch;
   std::string_view bytes;
-  if (!transport::unpack_payload(frame, flags, options, scratch, bytes)) return false;
   const uint16_t type = transport::type_id(Message::descriptor()->full_name());
+  if (!transport::unpack_payload(frame, flags, type, options, scratch, bytes)) return false;
   return transport::parse_payload(bytes, flags, type, options, out);
 }
 

@@ -10,6 +10,10 @@
 #include "common/highlevel/supervoxel.h"
 #include "common/highlevel/wire_precision.h"
 #include "common/radio/map_codec.h"
+#include "common/radio/map_dictionary.h"
+#include "common/transport/envelope.h"
+#include "common/transport/payload_wire.h"
+#include "common/transport/type_id.h"
 #include "hexplore/v1/hlmap.pb.h"
 #include "tests/radio/codec_fixtures.h"
 
@@ -184,6 +188,45 @@ TEST(MapCodec, RefusesMalformedInput) {
   // (robot slot, seq, incarnation, digest, then a supervoxel count of 2^32 - 1)
   std::string huge("\x02\x01\x01\x00\x00\x00\x00\xff\xff\xff\xff\x0f\x00", 13);
   EXPECT_FALSE(decode(codec, huge, &roster, out));
+}
+
+// On the radio an increment is compressed with the map dictionary: the frame names it, a peer
+// holding it gets back exactly what was sent, and a socket without it (a teammate built with
+// another dictionary, or none) refuses the frame rather than misreading it.
+TEST(MapDictionary, AnIncrementTravelsCompressedWithItAndOnlyAPeerHoldingItReadsIt) {
+  auto table = std::make_shared<transport::CodecTable>();
+  table->add(std::make_shared<MapCodec>(false, kEtaS));
+  transport::SocketOptions with;
+  with.codecs = table;
+  with.roster = std::make_shared<transport::Roster>(testing::roster());
+  const highlevel::SourcedUpdate inc = increment(5);
+  const v1::MapIncrement message = highlevel::to_increment(inc, contribution_of(inc));
+  const uint16_t type = transport::type_id(v1::MapIncrement::descriptor()->full_name());
+  std::string frame;
+  const uint8_t flags = transport::encode_payload(message, type, true, with, frame);
+  ASSERT_TRUE(flags & transport::kPayloadCompressed);
+  EXPECT_EQ(transport::frame_dictionary_id(frame), map_dictionary().id());
+
+  std::string scratch;
+  std::string_view bytes;
+  ASSERT_TRUE(transport::unpack_payload(frame, flags, type, with, scratch, bytes));
+  v1::MapIncrement back, direct;
+  ASSERT_TRUE(transport::parse_payload(bytes, flags, type, with, back));
+  ASSERT_TRUE(decode(MapCodec(false, kEtaS), encode(MapCodec(false, kEtaS), message, with.roster.get()),
+                     with.roster.get(), direct));
+  EXPECT_EQ(back.SerializeAsString(), direct.SerializeAsString());
+
+  transport::SocketOptions without = with;
+  without.codecs = nullptr;
+  EXPECT_FALSE(transport::unpack_payload(frame, flags, type, without, scratch, bytes));
+}
+
+TEST(MapDictionary, RefusesBytesThatAreNoDictionaryAndFramesOfAnother) {
+  EXPECT_THROW(transport::CompressionDictionary("just some bytes, no dictionary header", 19), std::invalid_argument);
+  std::string plain;
+  transport::compress(std::string(500, 'x'), 19, plain);
+  std::string out;
+  EXPECT_FALSE(map_dictionary().decompress(plain, 1000, out));  // a frame without its id
 }
 
 }  // namespace

@@ -1,0 +1,16 @@
+#pragma once
+// The zstd dictionary of map increments and repair snapshots on the radio
+// (dictionaries/map.zdict, compiled in: every robot must hold the same one, and a frame names
+// the id of the dictionary it was compressed with). Trained by
+// tools/radio/train_map_dictionary.sh on the tuning scenes' increments.
+
+#include "common/transport/compression.h"
+
+namespace hexplore::radio {
+
+// zstd level of the map payloads (the transport's level for team payloads).
+inline constexpr int kMapDictionaryLevel = 19;
+
+const transport::CompressionDictionary& map_dictionary();
+
+}  // namespace hexplore::radio
