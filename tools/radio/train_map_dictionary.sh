@@ -4,6 +4,7 @@
 # and office; never the evaluation scenes), and prints how much it saves on them.
 #
 # Usage: tools/radio/train_map_dictionary.sh [BUILD_DIR] [OUT]   (defaults: build, the tree's file)
+# (SECONDS_PER_MISSION=S in the environment samples S sim seconds per scene instead of 300.)
 # Needs the zstd command (Debian package zstd). After retraining, bump the dictionary id below
 # and hexplore.v1.SCHEMA_VERSION_CURRENT: robots with different dictionaries cannot read each
 # other's maps (they refuse the frames and count them malformed), and the schema check says why.
@@ -12,7 +13,7 @@ cd "$(dirname "$0")/../.."
 BUILD=${1:-build}
 OUT=${2:-common/radio/dictionaries/map.zdict}
 DICTIONARY_ID=1752694785  # "hx" 0x6878 << 16 | 1: the first map dictionary
-SECONDS_PER_MISSION=300
+SECONDS_PER_MISSION=${SECONDS_PER_MISSION:-300}  # sim seconds sampled per scene
 
 command -v zstd > /dev/null || { echo "needs zstd (apt-get install zstd)" >&2; exit 1; }
 WORK=$(mktemp -d)
