@@ -236,7 +236,7 @@ void Requester::handle(std::vector<zmq::message_t>& frames) {
   std::string_view payload;
   if (!unpack_payload(frames[2].to_string_view(), decoded.payload_flags, decoded.type_id, options_, scratch_,
                       payload)) {
-    drop(accounting_, topic, DropReason::kMalformed, "compressed reply is corrupt or too large");
+    drop(accounting_, topic, DropReason::kMalformed, "compressed reply is corrupt, too large, or of a dictionary this build does not hold");
     return;  // times out
   }
   const size_t wire_bytes = frames[1].size() + frames[2].size();

@@ -128,7 +128,7 @@ void Subscriber::handle(std::vector<zmq::message_t>& frames) {
       type_matched = true;
       s.decoded.header.set_payload_type(h.type);
       if (!unpack_payload(frames[2].to_string_view(), s.decoded.payload_flags, type, s.options, s.scratch, payload)) {
-        drop(s.accounting, topic, DropReason::kMalformed, "compressed payload is corrupt or too large");
+        drop(s.accounting, topic, DropReason::kMalformed, "compressed payload is corrupt, too large, or of a dictionary this build does not hold");
         return;
       }
     }
