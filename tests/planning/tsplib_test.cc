@@ -71,6 +71,9 @@ TEST(Tsplib, ErrorsNameTheLine) {
   EXPECT_EQ(error_of("NAME: x\nTYPE: TSP\nDIMENSION: 2\nEDGE_WEIGHT_TYPE: EUC_2D\nNODE_COORD_SECTION\n1 0 0\n2 zero 1\nEOF\n"),
             "test.tsp:7: expected '<node id> <x> <y>', got '2 zero 1'");
   EXPECT_EQ(error_of("NAME: x\nDIMENSION: two\n"), "test.tsp:2: DIMENSION 'two' is not an integer");
+  // A header alone may not make the reader allocate for 98 million nodes (fuzz_tsplib: 46 s).
+  EXPECT_EQ(error_of("NAME: x\nDIMENSION : 98027629\nEDGE_WEIGHT_TYPE : EUC_2D\nNODE_COORD_SECTION\n2 0 0\n"),
+            "test.tsp:2: DIMENSION 98027629 above this reader's limit of 1000000");
   EXPECT_EQ(error_of("NAME: x\nDIMENSION: 2\nEDGE_WEIGHT_TYPE: MAN_3D\n"),
             "test.tsp:3: EDGE_WEIGHT_TYPE 'MAN_3D' is not supported (EUC_2D, CEIL_2D, ATT, GEO)");
   EXPECT_EQ(error_of("NAME: x\nDIMENSION: 2\nEDGE_WEIGHT_TYPE: EUC_2D\nNODE_COORD_SECTION\n1 0 0\n1 2 2\n"),

@@ -17,6 +17,9 @@ std::string trim(const std::string& s) {
 }
 
 // TSPLIB's nint(): round half up for non-negative distances.
+// The largest TSPLIB instance (pla85900) has 85,900 nodes; the GA routes a few thousand.
+constexpr int kMaxDimension = 1'000'000;
+
 double nint(double v) { return std::floor(v + 0.5); }
 
 double geo_radians(double v) {
@@ -111,6 +114,10 @@ TsplibInstance parse_tsplib(std::istream& in, const std::string& origin) {
         fail("DIMENSION '" + value + "' is not an integer");
       }
       if (dimension < 1) fail("DIMENSION must be positive");
+      // The coordinates are allocated when their section starts: a header may not make the
+      // reader reserve gigabytes for nodes the file never holds (found by fuzz_tsplib).
+      if (dimension > kMaxDimension)
+        fail("DIMENSION " + std::to_string(dimension) + " above this reader's limit of " + std::to_string(kMaxDimension));
     } else if (key == "EDGE_WEIGHT_TYPE") {
       static const std::map<std::string, TsplibMetric> kMetrics = {
           {"EUC_2D", TsplibMetric::kEuc2d}, {"CEIL_2D", TsplibMetric::kCeil2d},
