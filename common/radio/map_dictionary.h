@@ -8,9 +8,6 @@
 
 namespace hexplore::radio {
 
-// zstd level of the map payloads (the transport's level for team payloads).
-inline constexpr int kMapDictionaryLevel = 19;
-
 const transport::CompressionDictionary& map_dictionary();
 
 }  // namespace hexplore::radio

@@ -13,6 +13,10 @@ struct ZSTD_DDict_s;
 
 namespace hexplore::transport {
 
+// The level team payloads are compressed at (SocketOptions::compress_level unless a socket
+// says otherwise): they are small, so even the strongest level costs microseconds.
+inline constexpr int kTeamCompressLevel = 19;
+
 // Appends the zstd frame of `in` to `out` (level 1..19).
 void compress(std::string_view in, int level, std::string& out);
 // Replaces `out` with the decompressed `in`; false when `in` is not one complete zstd frame

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/core/team_config.h"
+#include "common/transport/compression.h"
 #include "common/transport/curve_keys.h"
 #include "common/transport/link_model.h"
 #include "common/transport/payload_codec.h"
@@ -47,7 +48,7 @@ struct SocketOptions {
   // Team payloads of at least this many bytes are zstd-compressed when that makes them
   // smaller (below it the frame overhead eats the gain); 0 = never.
   size_t compress_min_bytes = 96;
-  int compress_level = 19;  // small payloads: even the strongest level costs microseconds
+  int compress_level = kTeamCompressLevel;
   // The radio model of team traffic between robots; null: an ideal link.
   std::shared_ptr<RadioMedium> radio;
   // The robot this socket belongs to (whose radio receives): the socket's identity for
