@@ -182,6 +182,10 @@ struct AlgorithmParams {
   // Planner and reproducibility.
   std::string planner = "hexplore";
   uint64_t seed = 1;
+  // The planners' own random stream (GA, MNSS, VRP search); 0: the team's seed. Set alone, it
+  // perturbs a mission without changing its scene, sensing or radio: how far runs of one seed
+  // drift apart under it is how much of a difference between two trees a seed can show.
+  uint64_t planner_seed = 0;
 };
 
 // How a scene given as a mesh file is placed in the world (ignored for built-in scenes): the

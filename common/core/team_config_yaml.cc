@@ -224,7 +224,7 @@ void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   r.only_keys(n, path, {"map_resolution_m", "rho_th", "rho_measure", "min_ise_patch_voxels", "gamma_th_deg", "gamma_th_ground_deg", "s_th_deg", "theta_l_deg", "theta_u_deg", "shared_view_angle_margin_deg",
                         "task_view_choice", "cluster_work", "beta_i", "beta_l", "beta_zeta", "beta_varsigma", "beta_e", "beta_c", "beta_m", "beta_d",
                         "reference_window", "eta_e_m", "eta_s_m", "eta_c_s", "eta_r_m", "eta_p_m", "eta_t_s", "liveness", "ga_population",
-                        "ga_max_generations", "ga_time_budget_s", "planner", "seed"});
+                        "ga_max_generations", "ga_time_budget_s", "planner", "seed", "planner_seed"});
   r.read(n, path, "map_resolution_m", p.map_resolution_m);
   r.read(n, path, "rho_th", p.rho_th);
   r.read(n, path, "rho_measure", p.rho_measure);
@@ -273,6 +273,7 @@ void read_params(const Reader& r, const YAML::Node& n, AlgorithmParams& p) {
   r.read(n, path, "ga_time_budget_s", p.ga_time_budget_s);
   r.read(n, path, "planner", p.planner);
   r.read(n, path, "seed", p.seed);
+  r.read(n, path, "planner_seed", p.planner_seed);
 }
 
 }  // namespace

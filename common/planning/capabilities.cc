@@ -65,7 +65,7 @@ PlannerOptions PlannerOptions::from(const core::AlgorithmParams& p) {
   o.ga_population = p.ga_population;
   o.ga_max_generations = p.ga_max_generations;
   o.ga_time_budget_s = p.ga_time_budget_s;
-  o.seed = p.seed;
+  o.seed = p.planner_seed != 0 ? p.planner_seed : p.seed;
   return o;
 }
 

@@ -179,6 +179,13 @@ TEST(TeamConfig, ClusterWorkIsReadAndChecked) {
                "must be cover or every_view, got 'all'");
 }
 
+TEST(TeamConfig, PlannerSeedIsReadAndDefaultsToNone) {
+  EXPECT_EQ(parse_team_config(kMinimal, "t").params.planner_seed, 0u);
+  const auto p = parse_team_config(std::string(kMinimal) + "params: {seed: 5, planner_seed: 1000008}\n", "t").params;
+  EXPECT_EQ(p.seed, 5u);
+  EXPECT_EQ(p.planner_seed, 1000008u);
+}
+
 TEST(TeamConfig, DuplicateRobotIsRejected) {
   expect_error("species: [{builtin: SLUGCAT}]\nrobots: [{id: a, species: SLUGCAT}, {id: a, species: SLUGCAT}]\n",
                "robots[1].id", "duplicate robot id");

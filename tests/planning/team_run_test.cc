@@ -49,6 +49,15 @@ struct Team {
   }
 };
 
+// A perturbation study changes the planners' random stream alone (team_config.h).
+TEST(PlannerOptions, PlannerSeedReplacesTheTeamSeedOnlyWhenSet) {
+  core::AlgorithmParams p;
+  p.seed = 5;
+  EXPECT_EQ(PlannerOptions::from(p).seed, 5u);
+  p.planner_seed = 1000008;
+  EXPECT_EQ(PlannerOptions::from(p).seed, 1000008u);
+}
+
 TEST(TeamRun, TargetsStayInsideTheExplorationRegionViewsInsideTheStandRegion) {
   const Team t;
   const PlanResult all = t.plan(t.options);
