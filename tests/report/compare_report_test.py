@@ -104,6 +104,8 @@ class CompareReport(unittest.TestCase):
         self.assertAlmostEqual(c["kb_per_s_per_robot"]["mean"], (90 / 200 + 90 / 300) / 2)
         self.assertAlmostEqual(slow["communication"]["exploration_route"]["cumulative_kb_per_robot"]["mean"], 0.0)
         self.assertAlmostEqual(hx["communication"]["total"]["cumulative_kb_per_robot"]["mean"], (117 + 97) / 2)
+        # The busiest robot: a's 117 KB in seed 1's 200 s, above its mean.
+        self.assertEqual(hx["busiest_robot_communication"], {"kb_per_s": 117 / 200, "robot": "a", "seed": 1})
         # Linear completeness: 0.5 observable reached at 0.5 / 1.0 of the way, on the 5-sample grid.
         self.assertEqual(hx["time_to_observable_completeness_s"]["0.5"]["n"], 2)
         with open(os.path.join(self.root, "comparison.csv")) as f:
@@ -114,6 +116,7 @@ class CompareReport(unittest.TestCase):
             md = f.read()
         self.assertIn("| slow | 2 | 500.0 ± 141.4 | 50.0 % |", md)
         self.assertIn("censored", md)
+        self.assertIn("| 0.585 (a, seed 1) |", md)
         self.assertFalse(os.path.exists(os.path.join(self.root, "figures")))
 
     def test_tail_is_the_time_spent_within_a_tenth_of_a_point_of_the_end(self):

@@ -155,6 +155,15 @@ def metrics(runs):
             rate.append(mean_kb / max(s["exploration_time_s"], 1e-9))
         comm[category] = {"cumulative_kb_per_robot": stats(kb), "kb_per_s_per_robot": stats(rate)}
     m["communication"] = comm
+    # A radio budget binds every robot, not their mean: the highest single robot's average
+    # total rate over all the runs (issue 14's bar is per robot).
+    busiest = None
+    for r, s in zip(runs, summaries):
+        for robot, c in r["communication"].items():
+            rate = sum(c.values()) / max(s["exploration_time_s"], 1e-9)
+            if busiest is None or rate > busiest["kb_per_s"]:
+                busiest = {"kb_per_s": rate, "robot": robot, "seed": s.get("seed")}
+    m["busiest_robot_communication"] = busiest
     m["time_to_observable_completeness_s"] = {
         str(level): stats([first_time_at(r["series"], "observable", level) for r in runs]) for level in OBSERVABLE_LEVELS
     }
@@ -231,12 +240,14 @@ def markdown(result, order, reference):
     lines.append("")
     lines.append("## Communication per robot (cumulative KB / average KB/s)")
     lines.append("")
-    lines.append("| planner | " + " | ".join(CATEGORIES + ["total"]) + " |")
-    lines.append("|---|" + "---|" * (len(CATEGORIES) + 1))
+    lines.append("| planner | " + " | ".join(CATEGORIES + ["total"]) + " | busiest robot (KB/s) |")
+    lines.append("|---|" + "---|" * (len(CATEGORIES) + 2))
     for n in order:
         c = result[n]["communication"]
         cells = [f"{fmt(c[k]['cumulative_kb_per_robot']['mean'])} / {fmt(c[k]['kb_per_s_per_robot']['mean'], 3)}"
                  for k in CATEGORIES + ["total"]]
+        b = result[n]["busiest_robot_communication"]
+        cells.append(f"{fmt(b['kb_per_s'], 3)} ({b['robot']}, seed {b['seed']})" if b else "-")
         lines.append(f"| {n} | " + " | ".join(cells) + " |")
     lines.append("")
     lines.append("## Trajectory length per robot (m)")
@@ -277,7 +288,7 @@ def write_csv(path, result, order):
               "planning_time_mean_s", "planning_time_max_s", "planning_rounds"]
     for k in CATEGORIES + ["total"]:
         header += [f"{k}_cumulative_kb_per_robot", f"{k}_kb_per_s_per_robot"]
-    header += ["collisions", "time_limited_runs", "tail_reached_s_mean", "tail_s_mean"]
+    header += ["busiest_robot_kb_per_s", "collisions", "time_limited_runs", "tail_reached_s_mean", "tail_s_mean"]
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(header)
@@ -292,7 +303,8 @@ def write_csv(path, result, order):
             for k in CATEGORIES + ["total"]:
                 c = m["communication"][k]
                 row += [c["cumulative_kb_per_robot"]["mean"], c["kb_per_s_per_robot"]["mean"]]
-            row += [m["collisions"], m["end_reasons"].get("time limit", 0), m["tail"]["reached_s"]["mean"],
+            busiest = m["busiest_robot_communication"]
+            row += [busiest["kb_per_s"] if busiest else None, m["collisions"], m["end_reasons"].get("time limit", 0), m["tail"]["reached_s"]["mean"],
                     m["tail"]["tail_s"]["mean"]]
             w.writerow(["" if v is None else v for v in row])
 
