@@ -77,6 +77,7 @@ struct ExperimentRecord {
   std::string planner;
   std::string mode;  // "processes", "composed" or "lockstep"
   uint64_t seed = 0;
+  uint64_t planner_seed = 0;  // params.planner_seed (0: the planners drew from `seed`)
   std::vector<CompletenessSample> completeness;
   std::map<std::string, RobotTrack> robots;
   std::map<std::string, std::vector<double>> planning_times_s;  // per robot, one per round

@@ -98,6 +98,7 @@ std::string summary_json(const ExperimentRecord& r) {
   j << "  \"planner\": " << quoted(r.planner) << ",\n";
   j << "  \"mode\": " << quoted(r.mode) << ",\n";
   j << "  \"seed\": " << r.seed << ",\n";
+  j << "  \"planner_seed\": " << r.planner_seed << ",\n";
   j << "  \"end_reason\": " << quoted(r.end_reason) << ",\n";
   j << "  \"exploration_time_s\": " << number(r.exploration_time_s) << ",\n";
   j << "  \"wall_time_s\": " << number(r.wall_time_s) << ",\n";

@@ -40,6 +40,7 @@ TeamRecorder::TeamRecorder(const core::TeamConfig& team) : team_(&team) {
   record_.scene = team.scene;
   record_.planner = team.params.planner;
   record_.seed = team.params.seed;
+  record_.planner_seed = team.params.planner_seed;
   for (const auto& robot : team.robots) record_.robots[robot.id].species = robot.species;
 }
 

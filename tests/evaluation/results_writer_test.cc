@@ -113,6 +113,14 @@ TEST(ResultsWriter, WritesEveryFile) {
   EXPECT_EQ(std::count(completeness.begin(), completeness.end(), '\n'), 12);
 }
 
+// A run under another planner stream says so: its seed alone would not reproduce it.
+TEST(ResultsWriter, SummaryNamesThePlannerSeed) {
+  ExperimentRecord r = sample_record(5, 100.0, 0.8);
+  EXPECT_NE(summary_json(r).find("\"planner_seed\": 0,"), std::string::npos);
+  r.planner_seed = 1000008;
+  EXPECT_NE(summary_json(r).find("\"seed\": 5,\n  \"planner_seed\": 1000008,"), std::string::npos);
+}
+
 TEST(ResultsWriter, MultiRunSummaryHasMeanAndSpread) {
   const auto json = multi_run_summary_json({sample_record(1, 100.0, 0.8), sample_record(2, 200.0, 0.6)});
   EXPECT_NE(json.find("\"exploration_time_s\": {\"mean\": 150, \"stddev\": 70.71067812, \"min\": 100, \"max\": 200}"),
