@@ -1,5 +1,6 @@
 #include "common/highlevel/contribution_log.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hexplore::highlevel {
@@ -12,24 +13,31 @@ void ContributionLog::record(const SupervoxelSegmenter& segmenter, const Segment
   }
   u.edge_upserts = change.edges_added;
   u.edge_removals = change.edges_removed;
-  current_.apply(u);
-  for (uint64_t key : change.removed) pending_keys_.insert(key);
-  for (uint64_t key : change.upserted) pending_keys_.insert(key);
-  for (const EdgeKey& e : change.edges_added) pending_edges_.insert(e);
-  for (const EdgeKey& e : change.edges_removed) pending_edges_.insert(e);
+  record(u);
 }
 
-bool ContributionLog::significant(const Supervoxel& p, const Supervoxel& n) const {
+void ContributionLog::record(const MapUpdate& u) {
+  current_.apply(u);
+  for (uint64_t key : u.removals) pending_keys_.insert(key);
+  for (const Supervoxel& sv : u.upserts) pending_keys_.insert(sv.key);
+  for (const EdgeKey& e : u.edge_upserts) pending_edges_.insert(e);
+  for (const EdgeKey& e : u.edge_removals) pending_edges_.insert(e);
+}
+
+ContributionLog::Change ContributionLog::change_between(const Supervoxel& p, const Supervoxel& n) const {
   if (p.covered != n.covered || p.traversal_requirement != n.traversal_requirement || p.surface != n.surface ||
       p.gap != n.gap) {
-    return true;
+    return Change::kDiscrete;
   }
-  if ((p.center - n.center).norm() > tolerance_.center_m) return true;
+  if ((p.center - n.center).norm() > tolerance_.center_m) return Change::kGeometry;
   const double cos_angle = std::clamp(p.normal.dot(n.normal), -1.0, 1.0);
-  if (std::acos(cos_angle) > tolerance_.normal_deg * M_PI / 180.0) return true;
+  if (std::acos(cos_angle) > tolerance_.normal_deg * M_PI / 180.0) return Change::kGeometry;
   const double count = std::max(1, p.voxel_count);
-  return std::abs(n.voxel_count - p.voxel_count) > tolerance_.voxel_count_ratio * count ||
-         std::abs(n.covered_voxels - p.covered_voxels) > tolerance_.voxel_count_ratio * count;
+  if (std::abs(n.voxel_count - p.voxel_count) > tolerance_.voxel_count_ratio * count ||
+      std::abs(n.covered_voxels - p.covered_voxels) > tolerance_.voxel_count_ratio * count) {
+    return Change::kGeometry;
+  }
+  return Change::kNone;
 }
 
 SourcedUpdate ContributionLog::take_increment() {
@@ -37,6 +45,8 @@ SourcedUpdate ContributionLog::take_increment() {
   inc.source = source_;
   inc.seq = ++seq_;
   inc.incarnation = incarnation_;
+  const auto hold = static_cast<uint64_t>(std::max(1, tolerance_.geometry_resend_windows));
+  std::set<uint64_t> held;  // geometry changes that wait for their key's next resend window
   for (uint64_t key : pending_keys_) {
     auto now = current_.supervoxels.find(key);
     auto pub = published_.supervoxels.find(key);
@@ -44,11 +54,21 @@ SourcedUpdate ContributionLog::take_increment() {
       if (pub != published_.supervoxels.end()) {
         inc.update.removals.push_back(key);
         published_.supervoxels.erase(pub);
+        sent_in_.erase(key);
       }
-    } else if (pub == published_.supervoxels.end() || significant(pub->second, now->second)) {
-      inc.update.upserts.push_back(now->second);
-      published_.supervoxels[key] = now->second;
+      continue;
     }
+    if (pub != published_.supervoxels.end()) {
+      const Change change = change_between(pub->second, now->second);
+      if (change == Change::kNone) continue;
+      if (change == Change::kGeometry && seq_ < sent_in_[key] + hold) {
+        held.insert(key);
+        continue;
+      }
+    }
+    inc.update.upserts.push_back(now->second);
+    published_.supervoxels[key] = now->second;
+    sent_in_[key] = seq_;
   }
   for (const EdgeKey& e : pending_edges_) {
     const bool now = current_.edges.count(e) != 0;
@@ -61,7 +81,7 @@ SourcedUpdate ContributionLog::take_increment() {
       published_.edges.erase(e);
     }
   }
-  pending_keys_.clear();
+  pending_keys_ = std::move(held);
   pending_edges_.clear();
   // A heartbeat changes nothing: the digest of the last change still holds.
   if (!inc.update.empty()) published_digest_ = published_.digest();
