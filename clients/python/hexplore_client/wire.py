@@ -9,7 +9,7 @@ import math
 from dataclasses import dataclass
 from typing import Optional
 
-SCHEMA_VERSION = 5  # hexplore.v1.SCHEMA_VERSION_CURRENT (messages.py checks the two agree)
+SCHEMA_VERSION = 6  # hexplore.v1.SCHEMA_VERSION_CURRENT (messages.py checks the two agree)
 
 # common/transport/topics.cc: team topics travel as one control byte, code = index + 1.
 TEAM_TOPICS = ("team/pose", "team/map", "team/plan", "team/path", "team/mission")
