@@ -21,6 +21,7 @@ void PlanCodec::encode(const google::protobuf::MessageLite& message, const trans
   const auto& s = static_cast<const v1::TeamSolution&>(message);
   ByteWriter w(out);
   w.varint(s.round());
+  w.bytes(s.planner());
   w.varint(static_cast<uint64_t>(s.sequences_size()));
   for (const auto& seq : s.sequences()) {
     write_robot(w, roster, seq.robot_id());
@@ -50,6 +51,7 @@ bool PlanCodec::decode(std::string_view data, const transport::Roster* roster,
   auto& s = static_cast<v1::TeamSolution&>(message);
   ByteReader r(data);
   s.set_round(r.varint());
+  s.set_planner(std::string(r.bytes(128)));
   // Every element takes at least one byte: counts beyond what is left are malformed.
   const uint64_t n = r.bounded(r.remaining());
   for (uint64_t i = 0; i < n && !r.failed(); ++i) {

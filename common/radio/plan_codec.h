@@ -2,11 +2,11 @@
 // team/plan on the radio: a robot's team solution (paper: the reference solution) with its
 // cluster sequences and the team's given-up targets. Cluster ids and given-up keys are
 // supervoxel keys as seed-cell steps (key_steps.h); cluster centres are decimetre steps from
-// their cluster id's seed cell (within 5 cm); route lengths centimetres; robots roster slots.
-// Carried is what teammates act on. Not carried, so they decode as empty and zero: the planner
-// name and fitness (no teammate reads them; 13 of a typical solution's 150 bytes, wire schema 6;
-// the station has the planner from the planners' statuses) and planning_time_s (a measured
-// compute time, which would make the traffic of reproducible runs differ).
+// their cluster id's seed cell (within 5 cm); route lengths centimetres; robots roster slots;
+// the planner by name (which planner a robot runs is told by its solutions). Not carried, so
+// they decode as zero: fitness (no teammate reads it; 4 bytes, wire schema 6) and
+// planning_time_s (a measured compute time, which would make the traffic of reproducible runs
+// differ; the station has it from the planners' statuses).
 
 #include "common/transport/payload_codec.h"
 

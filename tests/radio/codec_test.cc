@@ -231,8 +231,8 @@ TEST(PlanCodec, CarriesSequencesCentresAndTheGivenUpSet) {
   v1::TeamSolution out;
   ASSERT_TRUE(decode(codec, wire, &roster, out));
   EXPECT_EQ(out.round(), 17u);
-  // Not carried: no teammate reads them, and a measured time would make runs differ.
-  EXPECT_EQ(out.planner(), "");
+  EXPECT_EQ(out.planner(), "hexplore");
+  // Not carried: no teammate reads the fitness, and a measured time would make runs differ.
   EXPECT_EQ(out.fitness(), 0.0);
   EXPECT_EQ(out.planning_time_s(), 0.0);
   ASSERT_EQ(out.sequences_size(), 2);
