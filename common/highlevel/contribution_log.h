@@ -3,7 +3,8 @@
 // changes are recorded as they happen, and every eta_c one sequenced increment carries the
 // current state of everything that changed in the window (the paper's incremental
 // transmission). Changes below a tolerance (a centre drifting by millimetres as points
-// accumulate) wait until they add up, which is most of the saving over resending. What was
+// accumulate) wait until they add up, which is most of the saving over resending, and geometry
+// that keeps changing goes out every few windows rather than in each. What was
 // published is the robot's contribution: its own fused map uses exactly that, as its peers do.
 // A snapshot of the whole published contribution answers repair requests.
 
