@@ -1,8 +1,10 @@
 #include "common/radio/plan_codec.h"
-#include "common/radio/vec3_proto.h"
+
+#include <iterator>
 
 #include "common/highlevel/supervoxel.h"
 #include "common/radio/key_steps.h"
+#include "common/radio/vec3_proto.h"
 #include "common/radio/wire_units.h"
 #include "hexplore/v1/plan.pb.h"
 
@@ -12,7 +14,38 @@ namespace {
 using transport::ByteReader;
 using transport::ByteWriter;
 
+// Code k is kPlanners[k - 1]; code 0: the name follows as a string.
+constexpr std::string_view kPlanners[] = {"hexplore", "no-hetero", "no-cluster", "no-mnss",
+                                          "no-assign", "mdvrp+",    "mromt+",     "tspga+"};
+constexpr uint64_t kPlannerCount = std::size(kPlanners);
+
+void write_planner(ByteWriter& w, const std::string& name) {
+  if (const auto code = planner_code(name)) {
+    w.varint(*code);
+    return;
+  }
+  w.varint(0);
+  w.bytes(name);
+}
+
+bool read_planner(ByteReader& r, std::string& name) {
+  const uint64_t code = r.varint();
+  if (r.failed() || code > kPlannerCount) return r.fail(), false;
+  if (code == 0) {
+    name.assign(r.bytes(128));
+  } else {
+    name.assign(kPlanners[code - 1]);
+  }
+  return !r.failed();
+}
+
 }  // namespace
+
+std::optional<uint8_t> planner_code(std::string_view name) {
+  for (uint64_t i = 0; i < kPlannerCount; ++i)
+    if (kPlanners[i] == name) return static_cast<uint8_t>(i + 1);
+  return std::nullopt;
+}
 
 const std::string& PlanCodec::type() const { return v1::TeamSolution::descriptor()->full_name(); }
 
@@ -21,7 +54,7 @@ void PlanCodec::encode(const google::protobuf::MessageLite& message, const trans
   const auto& s = static_cast<const v1::TeamSolution&>(message);
   ByteWriter w(out);
   w.varint(s.round());
-  w.bytes(s.planner());
+  write_planner(w, s.planner());
   w.varint(static_cast<uint64_t>(s.sequences_size()));
   for (const auto& seq : s.sequences()) {
     write_robot(w, roster, seq.robot_id());
@@ -51,7 +84,7 @@ bool PlanCodec::decode(std::string_view data, const transport::Roster* roster,
   auto& s = static_cast<v1::TeamSolution&>(message);
   ByteReader r(data);
   s.set_round(r.varint());
-  s.set_planner(std::string(r.bytes(128)));
+  if (!read_planner(r, *s.mutable_planner())) return false;
   // Every element takes at least one byte: counts beyond what is left are malformed.
   const uint64_t n = r.bounded(r.remaining());
   for (uint64_t i = 0; i < n && !r.failed(); ++i) {

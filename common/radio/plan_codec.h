@@ -3,14 +3,22 @@
 // cluster sequences and the team's given-up targets. Cluster ids and given-up keys are
 // supervoxel keys as seed-cell steps (key_steps.h); cluster centres are decimetre steps from
 // their cluster id's seed cell (within 5 cm); route lengths centimetres; robots roster slots;
-// the planner by name (which planner a robot runs is told by its solutions). Not carried, so
-// they decode as zero: fitness (no teammate reads it; 4 bytes, wire schema 6) and
+// the planner as its code below (which planner a robot runs is told by its solutions). Not carried, so
+// they decode as zero: fitness (no teammate reads it; wire schema 6) and
 // planning_time_s (a measured compute time, which would make the traffic of reproducible runs
 // differ; the station has it from the planners' statuses).
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
 
 #include "common/transport/payload_codec.h"
 
 namespace hexplore::radio {
+
+// A built-in planner's one-byte code on the radio (planning::PlannerRegistry::builtin(); wire
+// schema 6: new planners are appended, codes never change); any other name travels as a string.
+std::optional<uint8_t> planner_code(std::string_view name);
 
 class PlanCodec : public transport::PayloadCodec {
  public:

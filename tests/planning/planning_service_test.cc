@@ -15,7 +15,9 @@
 #include "common/core/endpoints.h"
 #include "common/core/team_config.h"
 #include "common/highlevel/map_proto.h"
+#include "common/planning/planner_registry.h"
 #include "common/planning/route_follower.h"
+#include "common/radio/plan_codec.h"
 #include "common/service/options.h"
 #include "common/service/service.h"
 #include "common/transport/publisher.h"
@@ -171,6 +173,12 @@ TEST_F(PlanningServiceTest, SwitchesPlannerAtRunTime) {
       },
       [&] { return plan_ && plan_->planner() == "no-mnss"; }));
   EXPECT_EQ(service_->active_planner(), "no-mnss");
+}
+
+// A planner without a radio code costs its name's bytes in every team solution.
+TEST(PlannerCodes, EveryBuiltInPlannerHasOneOnTheRadio) {
+  for (const std::string& name : planning::PlannerRegistry::builtin().names())
+    EXPECT_TRUE(radio::planner_code(name)) << name << " travels as a string: append it to plan_codec.cc's kPlanners";
 }
 
 // MROMT+ and TSPGA+ share no route: their team solution goes out without sequences (the

@@ -222,6 +222,24 @@ v1::TeamSolution solution() {
   return s;
 }
 
+TEST(PlanCodec, ABuiltInPlannerTakesOneByteAndAnyOtherNameTravelsWhole) {
+  const PlanCodec codec(1.0);
+  v1::TeamSolution s;
+  s.set_round(3);
+  for (const std::string name : {"hexplore", "tspga+", "my-planner", ""}) {
+    s.set_planner(name);
+    const std::string wire = encode(codec, s, nullptr);
+    EXPECT_EQ(wire.size(), planner_code(name) ? 5u : 6u + name.size()) << name;  // round, planner, 3 counts
+    v1::TeamSolution out;
+    ASSERT_TRUE(decode(codec, wire, nullptr, out)) << name;
+    EXPECT_EQ(out.planner(), name);
+  }
+  std::string past_the_table = encode(codec, s, nullptr);
+  past_the_table[1] = 9;  // codes run 0 (a name follows) to 8
+  v1::TeamSolution out;
+  EXPECT_FALSE(decode(codec, past_the_table, nullptr, out));
+}
+
 TEST(PlanCodec, CarriesSequencesCentresAndTheGivenUpSet) {
   const PlanCodec codec(1.0);
   const auto roster = testing::roster();
