@@ -3,8 +3,8 @@
 // cluster sequences and the team's given-up targets. Cluster ids and given-up keys are
 // supervoxel keys as seed-cell steps (key_steps.h); cluster centres are decimetre steps from
 // their cluster id's seed cell (within 5 cm); route lengths centimetres; robots roster slots;
-// the planner as its code below (which planner a robot runs is told by its solutions). Not carried, so
-// they decode as zero: fitness (no teammate reads it; wire schema 6) and
+// the planner as its code below (which planner a robot runs is told by its solutions). Not
+// carried, so they decode as zero: fitness (no teammate reads it; wire schema 6) and
 // planning_time_s (a measured compute time, which would make the traffic of reproducible runs
 // differ; the station has it from the planners' statuses).
 
