@@ -61,7 +61,9 @@ SourcedUpdate ContributionLog::take_increment() {
     if (pub != published_.supervoxels.end()) {
       const Change change = change_between(pub->second, now->second);
       if (change == Change::kNone) continue;
-      if (change == Change::kGeometry && seq_ < sent_in_[key] + hold) {
+      // Only a covered supervoxel's geometry waits: no view aims at it. An incomplete one's
+      // centre and normal are those of its unseen part, where the next view looks.
+      if (change == Change::kGeometry && now->second.covered && seq_ < sent_in_[key] + hold) {
         held.insert(key);
         continue;
       }

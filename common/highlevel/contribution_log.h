@@ -3,8 +3,9 @@
 // changes are recorded as they happen, and every eta_c one sequenced increment carries the
 // current state of everything that changed in the window (the paper's incremental
 // transmission). Changes below a tolerance (a centre drifting by millimetres as points
-// accumulate) wait until they add up, which is most of the saving over resending, and geometry
-// that keeps changing goes out every few windows rather than in each. What was
+// accumulate) wait until they add up, which is most of the saving over resending, and a
+// covered supervoxel's geometry that keeps changing goes out every few windows rather than in
+// each. What was
 // published is the robot's contribution: its own fused map uses exactly that, as its peers do.
 // A snapshot of the whole published contribution answers repair requests.
 
@@ -34,7 +35,8 @@ struct SourcedUpdate {
 
 // A published supervoxel is re-sent when a discrete attribute (coverage, traversal
 // requirement, class, coverage gap) changes, at once, or when its geometry drifts past these
-// bounds, at most once every `geometry_resend_windows` windows.
+// bounds: in the next window while it is incomplete (views aim at its centre and normal), at
+// most once every `geometry_resend_windows` windows once it is covered.
 struct PublishTolerance {
   // One voxel (the hlmap service passes params.map_resolution_m): a centre closer than that to
   // where it was says nothing the map can resolve. Re-sends were mostly centres creeping as
@@ -44,8 +46,8 @@ struct PublishTolerance {
   double normal_deg = 5.0;
   double voxel_count_ratio = 0.2;
   // A supervoxel under a robot's sensor grows and shifts in window after window (60 % of the
-  // records of a multi-building mission were such geometry re-sends, stop 56); peers plan on
-  // what is covered and traversable, which never waits. 1: every window.
+  // records of a multi-building mission were such geometry re-sends, 36 % of covered
+  // supervoxels, stop 56); no view aims at a covered one, so its drift can wait. 1: every window.
   int geometry_resend_windows = 3;
 };
 
