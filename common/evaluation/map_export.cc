@@ -62,4 +62,17 @@ std::vector<std::string> export_map(const std::vector<Eigen::Vector3f>& points, 
   return {ply, pcd, bt};
 }
 
+std::vector<Eigen::Vector3f> load_map_points(const std::string& pcd_path) {
+  pcl::PointCloud<pcl::PointXYZRGB> cloud;
+  try {
+    if (pcl::io::loadPCDFile(pcd_path, cloud) != 0) throw std::runtime_error("cannot read " + pcd_path);
+  } catch (const pcl::PCLException& e) {
+    throw std::runtime_error("cannot read " + pcd_path + ": " + e.what());
+  }
+  std::vector<Eigen::Vector3f> points;
+  points.reserve(cloud.size());
+  for (const auto& q : cloud) points.emplace_back(q.x, q.y, q.z);
+  return points;
+}
+
 }  // namespace hexplore::evaluation

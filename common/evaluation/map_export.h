@@ -17,6 +17,10 @@ namespace hexplore::evaluation {
 std::vector<std::string> export_map(const std::vector<Eigen::Vector3f>& points, double resolution_m,
                                     const std::string& dir);
 
+// The voxel centres of a map.pcd that export_map wrote (tools that read a results folder back).
+// Throws std::runtime_error naming a file that cannot be read.
+std::vector<Eigen::Vector3f> load_map_points(const std::string& pcd_path);
+
 // Height colour (RGB, 0-255) of `z` on a blue (low) - green - yellow - red (high) ramp over
 // [z_min, z_max].
 Eigen::Vector3i height_colour(double z, double z_min, double z_max);

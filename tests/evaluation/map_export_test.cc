@@ -52,6 +52,13 @@ TEST(MapExport, AnEmptyMapWritesNothingAndABadResolutionIsAnError) {
   EXPECT_THROW(export_map(kPoints, 0.15, "/proc/hexplore-cannot-write"), std::runtime_error);
 }
 
+TEST(MapExport, TheMapsPointsReadBackFromItsPcd) {
+  const hexplore::testing::ScratchDir scratch("map_export_read_back");
+  export_map(kPoints, 0.15, scratch.path().string());
+  EXPECT_EQ(load_map_points((scratch.path() / "map.pcd").string()), kPoints);
+  EXPECT_THROW(load_map_points((scratch.path() / "missing.pcd").string()), std::runtime_error);
+}
+
 TEST(MapExport, HeightColourRunsFromBlueToRed) {
   EXPECT_EQ(height_colour(0.0, 0.0, 10.0), Eigen::Vector3i(40, 70, 220));
   EXPECT_EQ(height_colour(10.0, 0.0, 10.0), Eigen::Vector3i(215, 40, 40));
