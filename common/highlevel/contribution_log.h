@@ -5,8 +5,8 @@
 // transmission). Changes below a tolerance (a centre drifting by millimetres as points
 // accumulate) wait until they add up, which is most of the saving over resending, and a
 // covered supervoxel's geometry that keeps changing goes out every few windows rather than in
-// each. What was
-// published is the robot's contribution: its own fused map uses exactly that, as its peers do.
+// each. What was published is the robot's contribution: its own fused map uses exactly that,
+// as its peers do.
 // A snapshot of the whole published contribution answers repair requests.
 
 #include <cstdint>

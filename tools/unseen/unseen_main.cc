@@ -86,10 +86,11 @@ void print_bands(const std::string& title, const std::vector<double>& edges, con
   size_t total = 0;
   for (size_t n : unseen) total += n;
   for (size_t i = 0; i < edges.size(); ++i) {
-    const std::string band = i + 1 < edges.size() ? std::to_string(edges[i]).substr(0, 4) + "-" +
-                                                         std::to_string(edges[i + 1]).substr(0, 4)
-                                                   : ">= " + std::to_string(edges[i]).substr(0, 4);
-    std::printf("| %s m | %zu | %zu | %.1f %% | %.1f %% |\n", band.c_str(), observable[i], unseen[i],
+    char band[48];
+    if (i == 0) std::snprintf(band, sizeof band, "< %g", edges[1]);
+    else if (i + 1 == edges.size()) std::snprintf(band, sizeof band, ">= %g", edges[i]);
+    else std::snprintf(band, sizeof band, "%g-%g", edges[i], edges[i + 1]);
+    std::printf("| %s m | %zu | %zu | %.1f %% | %.1f %% |\n", band, observable[i], unseen[i],
                 observable[i] ? 100.0 * unseen[i] / observable[i] : 0.0, total ? 100.0 * unseen[i] / total : 0.0);
   }
 }
@@ -128,8 +129,8 @@ int main(int argc, char** argv) {
                                                 evaluation::load_map_points((dir / "map.pcd").string()));
     const auto driven = driven_positions(dir / "trajectories.csv");
 
-    const std::vector<double> heights{-1e9, 0.5, 2.0, 5.0, 10.0};
-    const std::vector<double> distances{0.0, 2.0, 5.0, 10.0, 20.0};
+    const std::vector<double> heights{-1e9, 0.5, 2.0, 5.0, 10.0};  // the first band is open below
+    const std::vector<double> distances{0.0, 2.0, 5.0, 10.0, 20.0};  // "< 2" is the first band
     std::vector<size_t> h_obs(heights.size()), h_unseen(heights.size()), d_obs(distances.size()),
         d_unseen(distances.size());
     size_t observable = 0, seen = 0;
