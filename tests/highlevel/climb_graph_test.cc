@@ -129,6 +129,11 @@ TEST(ClimbGraph, MultiStoreyRampsAndStairsConnectTheFloorsForTheTrackedSpeciesOn
   }
 }
 
+// B1's flight in the multi-building scene: 17 risers from y = 5 along x = 3, floors at 0 and 3 m.
+sim::detail::Climb multi_building_b1_flight() {
+  return {"B1 flight", {{3.0, 3.0, 0}, {3.0, 5.0 + 17 * 0.28 + 1.5, 0}}, 3.0};
+}
+
 // The multi-building scene's flights (17-23 risers of 0.17-0.18 m on 0.28 m treads, 32 deg)
 // as the tracked robot maps them driving up B1's: it joins the ground floor to the upper one.
 // No robot climbed any flight in the multi-building missions of stops 56-57, and every
@@ -137,7 +142,7 @@ TEST(ClimbGraph, MultiStoreyRampsAndStairsConnectTheFloorsForTheTrackedSpeciesOn
 TEST(ClimbGraph, MultiBuildingFlightConnectsTheFloorsForTheTrackedSpecies) {
   const auto scene = sim::generate_scene("multi-building", 1);
   const sim::RayCaster caster(scene.mesh);
-  const sim::detail::Climb flight{"B1 flight", {{3.0, 3.0, 0}, {3.0, 5.0 + 17 * 0.28 + 1.5, 0}}, 3.0};
+  const sim::detail::Climb flight = multi_building_b1_flight();
   const auto hl = map_of_climb(caster, flight, {core::builtin_slugcat(), core::builtin_mr1000()}, kSlugcat);
   const auto& g = hl.graph();
   const Eigen::Vector3d below = flight.path.front(), above = flight.path.back() + Eigen::Vector3d(0, 0, flight.top_z);
@@ -162,7 +167,7 @@ TEST(ClimbGraph, DISABLED_MultiBuildingFlightIsAFrontierFromItsFoot) {
   team_config.species = team;
   const highlevel::ClearanceOptions clearance = highlevel::clearance_options(team_config);  // planning's map
   const Eigen::AlignedBox3d region(Eigen::Vector3d(-1, -1, -0.5), Eigen::Vector3d(40.4, 40.4, 14.0));  // multi-building.yaml
-  const sim::detail::Climb flight{"B1 flight", {{3.0, 3.0, 0}, {3.0, 5.0 + 17 * 0.28 + 1.5, 0}}, 3.0};
+  const sim::detail::Climb flight = multi_building_b1_flight();
   const auto hl = map_of_climb(caster, flight, team, kSlugcat, /*stop_below_top_m=*/2.9, clearance);
   const auto& g = hl.graph();
   int frontier = 0;
