@@ -115,13 +115,13 @@ const Eigen::Vector2d kSides[kRimSideCount] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}}
 
 Eigen::Vector2d rim_side_direction(int side) { return kSides[side]; }
 
-uint8_t ClearanceIndex::open_sides(const Entry& g) const {
+ClearanceIndex::SideClosure ClearanceIndex::side_closure(const Entry& g) const {
   // Sides +x, -x, +y, -y: whether ground lies beyond (a neighbour supervoxel at this level about
   // one spacing out that way; centres are voxel means, so neither exactly one spacing out nor
-  // in line), and whether a wall stands there (it already keeps bodies off; a rim would double it).
+  // in line), and whether a wall stands there.
   const double step = options_.ground_spacing_m;
   const Eigen::Vector2d c = g.center.head<2>();
-  bool closed[kRimSideCount] = {false, false, false, false};
+  SideClosure closure;
   for_each_near(g.center, 1.75 * step, [&](const Entry& e) {
     if (e.key == g.key) return;
     const Eigen::Vector2d off = e.center.head<2>() - c;
@@ -129,25 +129,35 @@ uint8_t ClearanceIndex::open_sides(const Entry& g) const {
     if (!facade && (e.facade || std::abs(e.center.z() - g.center.z()) > options_.ground_band_m)) return;
     const Patch wall = facade ? facade_patch(e) : Patch{};
     for (int i = 0; i < kRimSideCount; ++i) {
-      if (closed[i]) continue;
-      const Eigen::Vector2d along(-kSides[i].y(), kSides[i].x());
+      const uint8_t bit = uint8_t(1u << i);
       if (facade) {
+        if (closure.by_wall & bit) continue;
         const Eigen::Vector2d rim_centre = c + 0.5 * step * kSides[i];
-        closed[i] = (nearest_point(wall, rim_centre) - rim_centre).norm() <= 0.5 * step;
+        if ((nearest_point(wall, rim_centre) - rim_centre).norm() <= 0.5 * step) closure.by_wall |= bit;
       } else {
+        if (closure.by_ground & bit) continue;
+        const Eigen::Vector2d along(-kSides[i].y(), kSides[i].x());
         const double out = off.dot(kSides[i]);
-        closed[i] = out > 0.25 * step && out <= 1.75 * step && std::abs(off.dot(along)) <= 0.75 * step;
+        if (out > 0.25 * step && out <= 1.75 * step && std::abs(off.dot(along)) <= 0.75 * step) closure.by_ground |= bit;
       }
     }
   });
-  uint8_t open = 0;
-  for (int i = 0; i < kRimSideCount; ++i)
-    if (!closed[i]) open |= uint8_t(1u << i);
-  return open;
+  return closure;
+}
+
+uint8_t ClearanceIndex::open_sides(const Entry& g) const {
+  // A wall already keeps bodies off its side; a rim there would double it.
+  const SideClosure closure = side_closure(g);
+  return uint8_t(~(closure.by_ground | closure.by_wall) & ((1u << kRimSideCount) - 1));
 }
 
 uint8_t ClearanceIndex::open_sides(const Supervoxel& ground) const {
   return open_sides(Entry{ground.key, ground.center, ground.normal, false});
+}
+
+uint8_t ClearanceIndex::walled_sides(const Supervoxel& ground) const {
+  const SideClosure closure = side_closure(Entry{ground.key, ground.center, ground.normal, false});
+  return uint8_t(closure.by_wall & ~closure.by_ground);
 }
 
 void ClearanceIndex::add_rims(const Entry& g, std::vector<Patch>& out) const {

@@ -81,6 +81,9 @@ class ClearanceIndex {
   // one spacing out at its level nor a wall: where the known ground ends. The supervoxel need
   // not be in the index.
   uint8_t open_sides(const Supervoxel& ground) const;
+  // The sides of a ground supervoxel (bit i: rim_side_direction(i)) with no ground about one
+  // spacing out at its level but a wall there: the walled sides that ground does not close.
+  uint8_t walled_sides(const Supervoxel& ground) const;
   // Keys of ground supervoxels centred within `radius` (in the plane) of p.
   std::vector<uint64_t> ground_near(const Eigen::Vector3d& p, double radius) const;
 
@@ -107,6 +110,12 @@ class ClearanceIndex {
   bool in_band(const Entry& facade, const Eigen::Vector3d& p) const;
   // The patches that may lie within `radius` of p (facades in p's band, rims at p's level).
   std::vector<Patch> patches_near(const Eigen::Vector3d& p, double radius) const;
+  // Which sides ground beyond closes, and which a wall closes (bit i: side i).
+  struct SideClosure {
+    uint8_t by_ground = 0;
+    uint8_t by_wall = 0;
+  };
+  SideClosure side_closure(const Entry& g) const;
   uint8_t open_sides(const Entry& g) const;
   // open_sides of an entry of the index, kept until an entry near it changes (rim_reach_m).
   uint8_t cached_open_sides(const Entry& g) const;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "common/highlevel/slopes.h"
+
 namespace hexplore::highlevel {
 
 HighLevelMap::HighLevelMap(std::vector<int> species_levels, ClearanceOptions clearance)
@@ -15,25 +17,64 @@ void HighLevelMap::clear() {
   incident_.clear();
   graph_.clear();
   clearance_.clear();
-  open_sides_.clear();
+  frontier_sides_.clear();
+  bridged_.clear();
 }
 
 void HighLevelMap::sync_clearance(uint64_t key) {
   const Supervoxel* sv = find(key);
   if (sv == nullptr || !graph_.contains(key)) {
-    open_sides_.erase(key);
+    frontier_sides_.erase(key);
     return;
   }
   ClearanceIndex::Measure m = clearance_.measure(sv->center, clearance_.search_m(), clearance_.options().body_radius_m);
   graph_.set_clearance(key, m.clearance, std::move(m.waypoints));
-  const uint8_t open = clearance_.open_sides(*sv);
-  if (open != 0) open_sides_[key] = open;
-  else open_sides_.erase(key);
+  const uint8_t sides = clearance_.open_sides(*sv) | uphill_sides(*sv, clearance_.walled_sides(*sv));
+  if (sides != 0) frontier_sides_[key] = sides;
+  else frontier_sides_.erase(key);
 }
 
-uint8_t HighLevelMap::open_sides(uint64_t key) const {
-  const auto it = open_sides_.find(key);
-  return it == open_sides_.end() ? 0 : it->second;
+double HighLevelMap::bridge_reach_m() const { return 1.75 * clearance_.options().ground_spacing_m; }
+
+void HighLevelMap::unbridge(uint64_t a, uint64_t b) {
+  for (auto [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
+    auto it = bridged_.find(x);
+    if (it == bridged_.end()) continue;
+    auto& v = it->second;
+    v.erase(std::remove(v.begin(), v.end(), y), v.end());
+    if (v.empty()) bridged_.erase(it);
+  }
+  if (edges_.count(EdgeKey::of(a, b)) == 0) graph_.remove_edge(a, b);
+}
+
+void HighLevelMap::drop_bridges(uint64_t key) {
+  const auto it = bridged_.find(key);
+  if (it == bridged_.end()) return;
+  const std::vector<uint64_t> old = it->second;
+  for (uint64_t other : old) unbridge(key, other);
+}
+
+void HighLevelMap::sync_bridges(uint64_t key) {
+  drop_bridges(key);
+  const Supervoxel* sv = find(key);
+  if (sv == nullptr || !graph_.contains(key) || !sloped(*sv)) return;
+  for (uint64_t other : clearance_.ground_near(sv->center, bridge_reach_m())) {
+    const Supervoxel* o = find(other);
+    if (other == key || o == nullptr || !graph_.contains(other) || !on_one_slope(*sv, *o, bridge_reach_m())) continue;
+    bridged_[key].push_back(other);
+    bridged_[other].push_back(key);
+    graph_.upsert_edge(key, other, (sv->center - o->center).norm());
+  }
+}
+
+bool HighLevelMap::bridged(uint64_t a, uint64_t b) const {
+  const auto it = bridged_.find(a);
+  return it != bridged_.end() && std::find(it->second.begin(), it->second.end(), b) != it->second.end();
+}
+
+uint8_t HighLevelMap::frontier_sides(uint64_t key) const {
+  const auto it = frontier_sides_.find(key);
+  return it == frontier_sides_.end() ? 0 : it->second;
 }
 
 const Supervoxel* HighLevelMap::find(uint64_t key) const {
@@ -58,7 +99,7 @@ void HighLevelMap::sync_edge(const EdgeKey& e) {
   const Supervoxel* a = find(e.a);
   const Supervoxel* b = find(e.b);
   if (edges_.count(e) == 0 || a == nullptr || b == nullptr || !a->traversable() || !b->traversable()) {
-    graph_.remove_edge(e.a, e.b);
+    if (!bridged(e.a, e.b)) graph_.remove_edge(e.a, e.b);
     return;
   }
   graph_.upsert_edge(e.a, e.b, (a->center - b->center).norm());
@@ -82,7 +123,8 @@ void HighLevelMap::apply(const MapUpdate& update) {
     forget(key);
     supervoxels_.erase(key);
     graph_.remove_vertex(key);
-    open_sides_.erase(key);
+    drop_bridges(key);
+    frontier_sides_.erase(key);
   }
   for (const EdgeKey& e : update.edge_removals) {
     if (edges_.erase(e) == 0) continue;
@@ -93,7 +135,7 @@ void HighLevelMap::apply(const MapUpdate& update) {
       v.erase(std::remove(v.begin(), v.end(), y), v.end());
       if (v.empty()) incident_.erase(it);
     }
-    graph_.remove_edge(e.a, e.b);
+    if (!bridged(e.a, e.b)) graph_.remove_edge(e.a, e.b);
   }
   for (const Supervoxel& sv : update.upserts) {
     const Supervoxel* old = find(sv.key);
@@ -122,6 +164,7 @@ void HighLevelMap::apply(const MapUpdate& update) {
       for (uint64_t key : clearance_.ground_near(p, reach)) dirty.push_back(key);
     std::sort(dirty.begin(), dirty.end());
     dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
+    for (uint64_t key : dirty) sync_bridges(key);  // before clearance: a bridge joins the graph
     for (uint64_t key : dirty) sync_clearance(key);
   }
   ++version_;

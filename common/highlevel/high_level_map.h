@@ -58,9 +58,10 @@ class HighLevelMap {
   // The whole map as one full-snapshot update.
   MapUpdate snapshot() const;
   // Planning's map (with clearance options): the sides of ground vertex `key` where the known
-  // ground ends (ClearanceIndex::open_sides, bit i: rim_side_direction(i)); 0 for anything
-  // else, and always 0 without clearance options.
-  uint8_t open_sides(uint64_t key) const;
+  // ground ends (bit i: rim_side_direction(i)): its rim (ClearanceIndex::open_sides), and on a
+  // slope, an uphill side where a wall stands and no ground is seen beyond (the next step of a
+  // flight seen from its foot). 0 for anything else, and always 0 without clearance options.
+  uint8_t frontier_sides(uint64_t key) const;
   const ClearanceOptions& clearance_options() const { return clearance_.options(); }
   // Number of applied batches that changed something.
   uint64_t version() const { return version_; }
@@ -69,6 +70,14 @@ class HighLevelMap {
   void sync_vertex(uint64_t key);
   void sync_edge(const EdgeKey& e);
   void sync_clearance(uint64_t key);
+  // Slope bridges (slopes.h): edges of the graph between ground pieces on one slope that the
+  // map's own edges do not join (a riser between them). Kept beside the shared edges, so a
+  // shared edge that goes leaves a bridge in place and a bridge that goes leaves a shared edge.
+  double bridge_reach_m() const;
+  void sync_bridges(uint64_t key);
+  void drop_bridges(uint64_t key);
+  void unbridge(uint64_t a, uint64_t b);
+  bool bridged(uint64_t a, uint64_t b) const;
 
   std::vector<int> levels_;
   std::map<uint64_t, Supervoxel> supervoxels_;
@@ -76,7 +85,8 @@ class HighLevelMap {
   std::unordered_map<uint64_t, std::vector<uint64_t>> incident_;  // key -> edge partners
   TopologyGraph graph_;
   ClearanceIndex clearance_;
-  std::unordered_map<uint64_t, uint8_t> open_sides_;  // ground vertices with a rim only
+  std::unordered_map<uint64_t, uint8_t> frontier_sides_;  // ground vertices with a frontier side only
+  std::unordered_map<uint64_t, std::vector<uint64_t>> bridged_;  // key -> slope-bridge partners
   uint64_t version_ = 0;
 };
 

@@ -6,7 +6,7 @@ namespace hexplore::planning {
 
 bool at_frontier(const highlevel::HighLevelMap& map, const highlevel::Supervoxel& sv, const Eigen::AlignedBox3d& region) {
   if (!sv.traversable()) return false;
-  const uint8_t open = map.open_sides(sv.key);
+  const uint8_t open = map.frontier_sides(sv.key);
   if (open == 0) return false;
   const double step = map.clearance_options().ground_spacing_m;
   for (int i = 0; i < highlevel::kRimSideCount; ++i) {

@@ -188,9 +188,9 @@ TEST(Clearance, TheRimOfTheKnownGroundKeepsBodiesOffLikeAWall) {
   EXPECT_GT(g.clearance_penalty(edge, 0), 0.0);
   EXPECT_EQ(g.clearance_penalty(inside, 0), 0.0);
   // The map says which sides are open (bit i: rim_side_direction(i); -y is side 3, -x side 1).
-  EXPECT_EQ(map.open_sides(edge), 1u << 3);
-  EXPECT_EQ(map.open_sides(corner), (1u << 1) | (1u << 3));
-  EXPECT_EQ(map.open_sides(inside), 0u);
+  EXPECT_EQ(map.frontier_sides(edge), 1u << 3);
+  EXPECT_EQ(map.frontier_sides(corner), (1u << 1) | (1u << 3));
+  EXPECT_EQ(map.frontier_sides(inside), 0u);
   EXPECT_EQ(rim_side_direction(3), Eigen::Vector2d(0, -1));
 }
 
@@ -202,7 +202,7 @@ TEST(Clearance, AWallAtTheEdgeOfTheGroundIsNotARimAsWell) {
   HighLevelMap map({1}, o);
   map.apply(hall(4.0, 0.5, 4));
   const uint64_t by_wall = supervoxel_key({5, 0, 0}, SurfaceClass::kGround);
-  EXPECT_EQ(map.open_sides(by_wall), 0u);
+  EXPECT_EQ(map.frontier_sides(by_wall), 0u);
   EXPECT_NEAR(map.graph().clearance(by_wall), 0.5, 1e-9);
   EXPECT_NEAR(map.graph().waypoint(by_wall, 0)->y(), 0.61, 1e-6);
   EXPECT_NEAR(map.graph().waypoint(by_wall, 0)->x(), 5.5, 1e-6);
@@ -220,15 +220,15 @@ TEST(Clearance, GroundSeenBeyondTheRimMovesIt) {
   MapUpdate more = open_ground(-0.5, 1);
   for (Supervoxel& s : more.upserts) s.key = supervoxel_key({int(std::floor(s.center.x())), -1, 0}, SurfaceClass::kGround);
   more.edge_upserts.clear();
-  EXPECT_NE(map.open_sides(old_edge), 0u);
+  EXPECT_NE(map.frontier_sides(old_edge), 0u);
   map.apply(more);
-  EXPECT_EQ(map.open_sides(old_edge), 0u);
+  EXPECT_EQ(map.frontier_sides(old_edge), 0u);
   EXPECT_GE(map.graph().clearance(old_edge), 0.61);
   EXPECT_EQ(*map.graph().waypoint(old_edge, 0), *map.graph().position(old_edge));
   MapUpdate gone;
   for (const Supervoxel& s : more.upserts) gone.removals.push_back(s.key);
   map.apply(gone);
-  EXPECT_NE(map.open_sides(old_edge), 0u);
+  EXPECT_NE(map.frontier_sides(old_edge), 0u);
   EXPECT_NEAR(map.graph().clearance(old_edge), 0.5, 1e-9);
   EXPECT_NEAR(map.graph().waypoint(old_edge, 0)->y(), 0.61, 1e-6);
 }
@@ -236,7 +236,8 @@ TEST(Clearance, GroundSeenBeyondTheRimMovesIt) {
 // Clearance depends only on the map, not on the order its pieces came in: ground and walls
 // that arrive, move and go in random batches leave every vertex with the clearance and the
 // waypoint that one update of the final map gives (the rim of a vertex changes when ground up
-// to two seed intervals from it does, and that rim reaches bodies around it).
+// to two seed intervals from it does, and that rim reaches bodies around it), and with the
+// same graph: the field's last columns are a slope, whose pieces bridges join (slopes.h).
 class ClearanceOrder : public ::testing::TestWithParam<int> {};
 
 TEST_P(ClearanceOrder, TheSameMapGivesTheSameClearanceWhateverTheOrderOfUpdates) {
@@ -245,7 +246,7 @@ TEST_P(ClearanceOrder, TheSameMapGivesTheSameClearanceWhateverTheOrderOfUpdates)
   o.body_half_width_m = {0.35, 0.3};
   std::mt19937 rng(GetParam());
   // A patchy field: ground cells of a 12 x 12 grid present at random, with jittered centres,
-  // and a few wall pieces.
+  // and a few wall pieces; from x = 8 on, the ground rises 30 deg along +x.
   std::vector<Supervoxel> all;
   std::uniform_real_distribution<double> jitter(-0.3, 0.3);
   for (int i = 0; i < 12; ++i)
@@ -254,6 +255,10 @@ TEST_P(ClearanceOrder, TheSameMapGivesTheSameClearanceWhateverTheOrderOfUpdates)
       Supervoxel g;
       g.key = supervoxel_key({i, j, 0}, SurfaceClass::kGround);
       g.center = {i + 0.5 + jitter(rng), j + 0.5 + jitter(rng), 0.0};
+      if (i >= 8) {
+        g.center.z() = std::tan(M_PI / 6) * (g.center.x() - 8.0);
+        g.normal = Eigen::Vector3d(-std::sin(M_PI / 6), 0, std::cos(M_PI / 6));
+      }
       g.surface = SurfaceClass::kGround;
       g.traversal_requirement = 1;
       all.push_back(g);
@@ -314,13 +319,32 @@ TEST_P(ClearanceOrder, TheSameMapGivesTheSameClearanceWhateverTheOrderOfUpdates)
   ASSERT_GT(differs.size(), 20u);
   for (size_t at = 0; at < differs.size(); at += 3)
     apply(std::vector<Supervoxel>(differs.begin() + at, differs.begin() + std::min(differs.size(), at + 3)), {});
+  // Shared edges made while a piece stood elsewhere go as well: the same map has the same edges.
+  MapUpdate stale;
+  for (const EdgeKey& e : batches.edges())
+    if (!once.edges().count(e)) stale.edge_removals.push_back(e);
+  batches.apply(stale);
 
+  int bridges = 0;
+  for (uint64_t key : once.graph().vertex_keys())
+    for (const auto& [other, length] : once.graph().neighbours(key)) bridges += once.edges().count(EdgeKey::of(key, other)) ? 0 : 1;
+  EXPECT_GT(bridges, 0) << "the slope's pieces need a bridge somewhere";
   for (uint64_t key : once.graph().vertex_keys()) {
     ASSERT_TRUE(batches.graph().contains(key));
     EXPECT_NEAR(batches.graph().clearance(key), once.graph().clearance(key), 1e-9) << seed_cell_of(key).x << "," << seed_cell_of(key).y;
     for (int species = 0; species < 2; ++species)
       EXPECT_LT((*batches.graph().waypoint(key, species) - *once.graph().waypoint(key, species)).norm(), 1e-9);
-    EXPECT_EQ(batches.open_sides(key), once.open_sides(key)) << seed_cell_of(key).x << "," << seed_cell_of(key).y;
+    EXPECT_EQ(batches.frontier_sides(key), once.frontier_sides(key)) << seed_cell_of(key).x << "," << seed_cell_of(key).y;
+    auto sorted = [](std::vector<std::pair<uint64_t, double>> v) {
+      std::sort(v.begin(), v.end());
+      return v;
+    };
+    const auto expected = sorted(once.graph().neighbours(key)), got = sorted(batches.graph().neighbours(key));
+    ASSERT_EQ(got.size(), expected.size()) << seed_cell_of(key).x << "," << seed_cell_of(key).y;
+    for (size_t k = 0; k < got.size(); ++k) {
+      EXPECT_EQ(got[k].first, expected[k].first);
+      EXPECT_NEAR(got[k].second, expected[k].second, 1e-9);
+    }
   }
 }
 

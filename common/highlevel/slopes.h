@@ -1,0 +1,34 @@
+#pragma once
+// Sloped ground as a low sensor sees it from below. A flight of stairs seen from its foot maps
+// as a few sloped ground supervoxels with the risers between them, which read as walls: the
+// treads above are seen at grazing angles or not at all. Driven up, the flight is ground of the
+// graph (tests/highlevel/climb_graph_test.cc), but from its foot the pieces are not joined and
+// the top of the known flight is walled, so nothing ever sent a robot up: in the multi-building
+// missions of stops 56-57 no robot climbed a flight, and every observable sample they missed
+// was upstairs (tools/unseen). Two readings of the planning map fix that (HighLevelMap):
+// - sloped ground pieces on one plane are joined even with a wall between them (a riser), and
+// - a wall standing uphill of sloped ground, with no ground seen beyond it, may as well be the
+//   next step: that side is a frontier until ground is seen there or a look gives it up.
+
+#include <cstdint>
+
+#include "common/highlevel/supervoxel.h"
+
+namespace hexplore::highlevel {
+
+// Ground tilted this much or more is a slope with an uphill side (noise on flat ground tilts
+// normals by a few degrees; the flights of the built-in scenes are 30-33 deg, ramps 18 deg).
+inline constexpr double kSlopeTiltDeg = 15.0;
+
+bool sloped(const Supervoxel& ground);
+
+// The sides among `sides` (bit i: rim_side_direction(i)) that face uphill of sloped ground
+// (within 45 deg); none for ground that is not sloped.
+uint8_t uphill_sides(const Supervoxel& ground, uint8_t sides);
+
+// Whether two sloped ground supervoxels lie on one plane (each centre within a few centimetres
+// of the other's plane, normals alike) and at most `reach_m` apart in the plane: a flight's
+// pieces on either side of a riser. Symmetric.
+bool on_one_slope(const Supervoxel& a, const Supervoxel& b, double reach_m);
+
+}  // namespace hexplore::highlevel
