@@ -5,10 +5,13 @@
 // graph (tests/highlevel/climb_graph_test.cc), but from its foot the pieces are not joined and
 // the top of the known flight is walled, so nothing ever sent a robot up: in the multi-building
 // missions of stops 56-57 no robot climbed a flight, and every observable sample they missed
-// was upstairs (tools/unseen). Two readings of the planning map fix that (HighLevelMap):
+// was upstairs (tools/unseen). Two readings of the planning map (HighLevelMap) take the graph
+// and the frontier up the flight:
 // - sloped ground pieces on one plane are joined even with a wall between them (a riser), and
 // - a wall standing uphill of sloped ground, with no ground seen beyond it, may as well be the
 //   next step: that side is a frontier until ground is seen there or a look gives it up.
+// In missions robots still stay off flights: the clearance model reads the risers as walls
+// too, so no view may stand on a flight (common/planning/README.md, "Flights bridged").
 
 #include <cstdint>
 
@@ -26,8 +29,8 @@ bool sloped(const Supervoxel& ground);
 // (within 45 deg); none for ground that is not sloped.
 uint8_t uphill_sides(const Supervoxel& ground, uint8_t sides);
 
-// Whether two sloped ground supervoxels lie on one plane (each centre within a few centimetres
-// of the other's plane, normals alike) and at most `reach_m` apart in the plane: a flight's
+// Whether two sloped ground supervoxels lie on one plane (each centre within 0.15 m of the
+// other's plane, normals within 10 deg) and at most `reach_m` apart in the plane: a flight's
 // pieces on either side of a riser. Symmetric.
 bool on_one_slope(const Supervoxel& a, const Supervoxel& b, double reach_m);
 
