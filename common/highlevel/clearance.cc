@@ -151,13 +151,10 @@ uint8_t ClearanceIndex::open_sides(const Entry& g) const {
   return uint8_t(~(closure.by_ground | closure.by_wall) & ((1u << kRimSideCount) - 1));
 }
 
-uint8_t ClearanceIndex::open_sides(const Supervoxel& ground) const {
-  return open_sides(Entry{ground.key, ground.center, ground.normal, false});
-}
-
-uint8_t ClearanceIndex::walled_sides(const Supervoxel& ground) const {
+ClearanceIndex::RimSides ClearanceIndex::rim_sides(const Supervoxel& ground) const {
   const SideClosure closure = side_closure(Entry{ground.key, ground.center, ground.normal, false});
-  return uint8_t(closure.by_wall & ~closure.by_ground);
+  const uint8_t all = (1u << kRimSideCount) - 1;
+  return {uint8_t(~(closure.by_ground | closure.by_wall) & all), uint8_t(closure.by_wall & ~closure.by_ground)};
 }
 
 void ClearanceIndex::add_rims(const Entry& g, std::vector<Patch>& out) const {

@@ -36,7 +36,7 @@ struct ClearanceOptions {
 };
 
 // The four sides of a ground supervoxel the rim test looks at: +x, -x, +y, -y (bit i of
-// ClearanceIndex::open_sides is side i).
+// ClearanceIndex::rim_sides is side i).
 inline constexpr int kRimSideCount = 4;
 Eigen::Vector2d rim_side_direction(int side);
 
@@ -77,13 +77,15 @@ class ClearanceIndex {
   // How far a vertex's clearance is measured: the largest body radius and a margin (a vertex
   // with no patch that close reads this value).
   double search_m() const;
-  // The sides of a ground supervoxel (bit i: rim_side_direction(i)) with neither ground about
-  // one spacing out at its level nor a wall: where the known ground ends. The supervoxel need
-  // not be in the index.
-  uint8_t open_sides(const Supervoxel& ground) const;
-  // The sides of a ground supervoxel (bit i: rim_side_direction(i)) with no ground about one
-  // spacing out at its level but a wall there: the walled sides that ground does not close.
-  uint8_t walled_sides(const Supervoxel& ground) const;
+  // The sides of a ground supervoxel (bit i: rim_side_direction(i)) from one search: open ones,
+  // with neither ground about one spacing out at its level nor a wall (where the known ground
+  // ends), and walled ones, with a wall but no ground there. The supervoxel need not be in the
+  // index.
+  struct RimSides {
+    uint8_t open = 0;
+    uint8_t walled = 0;
+  };
+  RimSides rim_sides(const Supervoxel& ground) const;
   // Keys of ground supervoxels centred within `radius` (in the plane) of p.
   std::vector<uint64_t> ground_near(const Eigen::Vector3d& p, double radius) const;
 

@@ -29,8 +29,8 @@ void HighLevelMap::sync_clearance(uint64_t key) {
   }
   ClearanceIndex::Measure m = clearance_.measure(sv->center, clearance_.search_m(), clearance_.options().body_radius_m);
   graph_.set_clearance(key, m.clearance, std::move(m.waypoints));
-  const uint8_t uphill = sloped(*sv) ? uphill_sides(*sv, clearance_.walled_sides(*sv)) : 0;  // walled_sides costs a search
-  const uint8_t sides = clearance_.open_sides(*sv) | uphill;
+  const ClearanceIndex::RimSides rim = clearance_.rim_sides(*sv);
+  const uint8_t sides = rim.open | uphill_sides(*sv, rim.walled);
   if (sides != 0) frontier_sides_[key] = sides;
   else frontier_sides_.erase(key);
 }

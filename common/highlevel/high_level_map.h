@@ -58,7 +58,7 @@ class HighLevelMap {
   // The whole map as one full-snapshot update.
   MapUpdate snapshot() const;
   // Planning's map (with clearance options): the sides of ground vertex `key` where the known
-  // ground ends (bit i: rim_side_direction(i)): its rim (ClearanceIndex::open_sides), and on a
+  // ground ends (bit i: rim_side_direction(i)): its rim (ClearanceIndex::rim_sides), and on a
   // slope, an uphill side where a wall stands and no ground is seen beyond (the next step of a
   // flight seen from its foot). 0 for anything else, and always 0 without clearance options.
   uint8_t frontier_sides(uint64_t key) const;

@@ -6,7 +6,7 @@
 // beyond stayed unseen (the crest hides it until the sensor is within about a metre of it), and
 // nothing made the robot drive the last metres (common/planning/README.md, "The frontier of
 // the known ground"). So ground where the known ground ends (the map's rim: a side with neither
-// ground about one seed interval out nor a wall, highlevel::ClearanceIndex::open_sides; and
+// ground about one seed interval out nor a wall, highlevel::ClearanceIndex::rim_sides; and
 // the walled uphill side of a slope, highlevel/slopes.h: HighLevelMap::frontier_sides) facing
 // into the exploration region needs a look like an ISE supervoxel: a ground view at its centre.
 // A look that leaves the rim where it was (the edge of a drop, ground no sensor reaches) gives
