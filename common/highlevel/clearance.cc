@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/core/team_config.h"
+#include "common/highlevel/slopes.h"
 
 namespace hexplore::highlevel {
 
@@ -25,7 +26,21 @@ ClearanceOptions clearance_options(const core::TeamConfig& team) {
   o.body_half_width_m = body_half_widths(team);
   o.facade_half_extent_m = 0.5 * team.params.eta_s_m;
   o.ground_spacing_m = team.params.eta_s_m;
+  for (const auto& species : team.species) {
+    o.body_height_m.push_back(2.0 * species.body_half_extents_m.z());
+    o.species_level.push_back(species.traversal_level);
+  }
   return o;
+}
+
+double ClearanceOptions::overhead_m(int requirement) const {
+  constexpr double kMarginM = 0.2;
+  double tallest = -1.0;
+  for (size_t k = 0; k < body_height_m.size() && k < species_level.size(); ++k)
+    if (species_level[k] >= requirement) tallest = std::max(tallest, body_height_m[k]);
+  if (tallest < 0.0)  // no species may stand there (or none known): every body
+    for (double h : body_height_m) tallest = std::max(tallest, h);
+  return tallest < 0.0 ? above_m : tallest + kMarginM;
 }
 
 ClearanceIndex::ClearanceIndex(ClearanceOptions options, double cell_m) : options_(std::move(options)), cell_m_(cell_m) {}
@@ -36,8 +51,18 @@ uint64_t ClearanceIndex::cell_key(const Eigen::Vector3d& p) const {
   return (static_cast<uint64_t>(static_cast<uint32_t>(x)) << 32) | static_cast<uint32_t>(y);
 }
 
+ClearanceIndex::Entry ClearanceIndex::entry_of(const Supervoxel& sv) {
+  return Entry{sv.key, sv.center, sv.normal, sv.facade(), sv.traversal_requirement};
+}
+
+ClearanceIndex::Entry ClearanceIndex::ground_at(const Eigen::Vector3d& p) {
+  Entry e;
+  e.center = p;
+  return e;
+}
+
 void ClearanceIndex::insert(const Supervoxel& sv) {
-  cells_[cell_key(sv.center)].push_back({sv.key, sv.center, sv.normal, sv.facade()});
+  cells_[cell_key(sv.center)].push_back(entry_of(sv));
   invalidate_rims_near(sv.center);
 }
 
@@ -86,9 +111,15 @@ void ClearanceIndex::for_each_near(const Eigen::Vector3d& p, double radius, F&& 
     }
 }
 
-bool ClearanceIndex::in_band(const Entry& facade, const Eigen::Vector3d& p) const {
-  const double dz = facade.center.z() - p.z();
-  return facade.facade && dz >= -options_.below_m && dz <= options_.above_m;
+bool ClearanceIndex::in_the_way(const Entry& facade, const Entry& ground) const {
+  const double dz = facade.center.z() - ground.center.z();
+  if (!facade.facade || dz < -options_.below_m || dz > options_.above_m) return false;
+  // A surface facing down above every body that may stand here leaves room under it: the slab
+  // beside B1's flight, 0.7 m over its upper treads, kept the 0.4 m tall tracked robots off the
+  // flight (stop 58; the MR1000 may not use it). A ceiling's edge seen from below faces partly
+  // sideways, hence the loose test.
+  if (facade.normal.z() < -0.3 && dz > options_.overhead_m(ground.requirement)) return false;
+  return !step_of_slope(ground.center, ground.normal, facade.center, facade.normal);
 }
 
 Eigen::Vector2d ClearanceIndex::nearest_point(const Patch& patch, const Eigen::Vector2d& p) {
@@ -125,7 +156,7 @@ ClearanceIndex::SideClosure ClearanceIndex::side_closure(const Entry& g) const {
   for_each_near(g.center, 1.75 * step, [&](const Entry& e) {
     if (e.key == g.key) return;
     const Eigen::Vector2d off = e.center.head<2>() - c;
-    const bool facade = in_band(e, g.center);
+    const bool facade = in_the_way(e, g);
     if (!facade && (e.facade || std::abs(e.center.z() - g.center.z()) > options_.ground_band_m)) return;
     const Patch wall = facade ? facade_patch(e) : Patch{};
     for (int i = 0; i < kRimSideCount; ++i) {
@@ -152,7 +183,7 @@ uint8_t ClearanceIndex::open_sides(const Entry& g) const {
 }
 
 ClearanceIndex::RimSides ClearanceIndex::rim_sides(const Supervoxel& ground) const {
-  const SideClosure closure = side_closure(Entry{ground.key, ground.center, ground.normal, false});
+  const SideClosure closure = side_closure(entry_of(ground));
   const uint8_t all = (1u << kRimSideCount) - 1;
   return {uint8_t(~(closure.by_ground | closure.by_wall) & all), uint8_t(closure.by_wall & ~closure.by_ground)};
 }
@@ -170,12 +201,13 @@ void ClearanceIndex::add_rims(const Entry& g, std::vector<Patch>& out) const {
   }
 }
 
-std::vector<ClearanceIndex::Patch> ClearanceIndex::patches_near(const Eigen::Vector3d& p, double radius) const {
+std::vector<ClearanceIndex::Patch> ClearanceIndex::patches_near(const Entry& ground, double radius) const {
+  const Eigen::Vector3d& p = ground.center;
   std::vector<Patch> out;
   const double reach = radius + std::max(options_.facade_half_extent_m, options_.ground_spacing_m);
   for_each_near(p, reach, [&](const Entry& e) {
     if (e.facade) {
-      if (in_band(e, p)) out.push_back(facade_patch(e));
+      if (in_the_way(e, ground)) out.push_back(facade_patch(e));
     } else if (std::abs(e.center.z() - p.z()) <= options_.ground_band_m) {
       add_rims(e, out);
     }
@@ -190,18 +222,19 @@ double ClearanceIndex::distance(const std::vector<Patch>& patches, const Eigen::
 }
 
 double ClearanceIndex::clearance(const Eigen::Vector3d& p, double search_m) const {
-  return distance(patches_near(p, search_m), p.head<2>(), search_m);
+  return distance(patches_near(ground_at(p), search_m), p.head<2>(), search_m);
 }
 
 Eigen::Vector3d ClearanceIndex::clear_position(const Eigen::Vector3d& p, double radius) const {
-  return pushed_clear(patches_near(p, radius + options_.max_shift_m), p, radius);
+  return pushed_clear(patches_near(ground_at(p), radius + options_.max_shift_m), p, radius);
 }
 
-ClearanceIndex::Measure ClearanceIndex::measure(const Eigen::Vector3d& p, double search_m,
+ClearanceIndex::Measure ClearanceIndex::measure(const Supervoxel& ground, double search_m,
                                                 const std::vector<double>& radii) const {
+  const Eigen::Vector3d& p = ground.center;
   double reach = search_m;
   for (double r : radii) reach = std::max(reach, r + options_.max_shift_m);
-  const std::vector<Patch> patches = patches_near(p, reach);  // the expensive part, once
+  const std::vector<Patch> patches = patches_near(entry_of(ground), reach);  // the expensive part, once
   Measure m;
   m.clearance = distance(patches, p.head<2>(), search_m);
   for (double r : radii) m.waypoints.push_back(pushed_clear(patches, p, r));

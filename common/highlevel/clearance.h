@@ -29,10 +29,18 @@ struct ClearanceOptions {
   double ground_spacing_m = 1.0;      // ground supervoxels lie this far apart (eta_s): the rim test's step
   double ground_band_m = 1.0;         // ground this far above or below counts as the same level
   double below_m = 0.2;               // facades centred from this far below the ground ...
-  double above_m = 1.5;               // ... to this far above it are in a body's way there
+  double above_m = 1.5;               // ... to this far above it are in a body's way there,
+  // except a facade facing down and higher than every body that may stand on the ground
+  // (overhead_m): per species index, the body's height and traversal level; empty: none is.
+  std::vector<double> body_height_m;
+  std::vector<int> species_level;
   double max_shift_m = 0.5;           // a waypoint moves at most this far from its vertex
 
   bool enabled() const { return !body_radius_m.empty(); }
+  // Above this height over ground of traversal requirement `requirement`, a facade facing down
+  // is a ceiling over every body that may stand there (the tallest of the species whose level
+  // meets the requirement, all species for 0, and a margin).
+  double overhead_m(int requirement) const;
 };
 
 // The four sides of a ground supervoxel the rim test looks at: +x, -x, +y, -y (bit i of
@@ -70,7 +78,9 @@ class ClearanceIndex {
     double clearance = 0.0;
     std::vector<Eigen::Vector3d> waypoints;  // per radius
   };
-  Measure measure(const Eigen::Vector3d& p, double search_m, const std::vector<double>& radii) const;
+  // At a ground supervoxel: on sloped ground the steps of its slope are not obstacles
+  // (slopes.h: a flight's risers), nor is a ceiling over every body that may stand there.
+  Measure measure(const Supervoxel& ground, double search_m, const std::vector<double>& radii) const;
   // How far a change at p (a supervoxel that appeared, moved or went) can change clearances:
   // it may add or remove a rim patch up to ~1.9 spacings away, which reaches bodies around it.
   double influence_m() const;
@@ -97,7 +107,11 @@ class ClearanceIndex {
     Eigen::Vector3d center = Eigen::Vector3d::Zero();
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
     bool facade = false;
+    int requirement = 0;  // ground: its traversal requirement
   };
+  static Entry entry_of(const Supervoxel& sv);
+  // Ground at p with nothing known of it: level, and open to every species.
+  static Entry ground_at(const Eigen::Vector3d& p);
   uint64_t cell_key(const Eigen::Vector3d& p) const;
   template <typename F>
   void for_each_near(const Eigen::Vector3d& p, double radius, F&& f) const;
@@ -109,9 +123,11 @@ class ClearanceIndex {
   };
   static Eigen::Vector2d nearest_point(const Patch& patch, const Eigen::Vector2d& p);
   Patch facade_patch(const Entry& facade) const;
-  bool in_band(const Entry& facade, const Eigen::Vector3d& p) const;
-  // The patches that may lie within `radius` of p (facades in p's band, rims at p's level).
-  std::vector<Patch> patches_near(const Eigen::Vector3d& p, double radius) const;
+  // Whether a facade is in the way of bodies on `ground`: in its height band, not a ceiling over
+  // them, not a step of its slope.
+  bool in_the_way(const Entry& facade, const Entry& ground) const;
+  // The patches that may lie within `radius` of `ground` (facades in its way, rims at its level).
+  std::vector<Patch> patches_near(const Entry& ground, double radius) const;
   // Which sides ground beyond closes, and which a wall closes (bit i: side i).
   struct SideClosure {
     uint8_t by_ground = 0;

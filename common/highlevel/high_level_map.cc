@@ -27,7 +27,7 @@ void HighLevelMap::sync_clearance(uint64_t key) {
     frontier_sides_.erase(key);
     return;
   }
-  ClearanceIndex::Measure m = clearance_.measure(sv->center, clearance_.search_m(), clearance_.options().body_radius_m);
+  ClearanceIndex::Measure m = clearance_.measure(*sv, clearance_.search_m(), clearance_.options().body_radius_m);
   graph_.set_clearance(key, m.clearance, std::move(m.waypoints));
   const ClearanceIndex::RimSides rim = clearance_.rim_sides(*sv);
   const uint8_t sides = rim.open | uphill_sides(*sv, rim.walled);
@@ -140,8 +140,10 @@ void HighLevelMap::apply(const MapUpdate& update) {
   }
   for (const Supervoxel& sv : update.upserts) {
     const Supervoxel* old = find(sv.key);
-    // Clearance depends only on where supervoxels are and which way facades face.
-    const bool moved = old == nullptr || old->center != sv.center || old->normal != sv.normal || old->surface != sv.surface;
+    // Clearance depends only on where supervoxels are, which way they face and, for ground,
+    // which species may stand there (a ceiling is over some bodies only).
+    const bool moved = old == nullptr || old->center != sv.center || old->normal != sv.normal || old->surface != sv.surface ||
+                       old->traversal_requirement != sv.traversal_requirement;
     if (moved) forget(sv.key);
     supervoxels_[sv.key] = sv;
     if (!clearance) continue;

@@ -13,6 +13,9 @@ namespace {
 // kerb is far off either plane (its normals are vertical anyway).
 constexpr double kPlaneToleranceM = 0.15;
 constexpr double kNormalToleranceDeg = 10.0;
+// Risers of B1's flight (stop 58): centres 0.01-0.04 m off the plane of the ground beside them;
+// treads seen too steeply to be ground, up to 0.05 m.
+constexpr double kStepToleranceM = 0.25;
 
 double tilt_deg(const Eigen::Vector3d& normal) {
   return std::acos(std::clamp(normal.z(), -1.0, 1.0)) * 180.0 / M_PI;
@@ -21,6 +24,15 @@ double tilt_deg(const Eigen::Vector3d& normal) {
 }  // namespace
 
 bool sloped(const Supervoxel& ground) { return ground.ground() && tilt_deg(ground.normal) >= kSlopeTiltDeg; }
+
+bool step_of_slope(const Eigen::Vector3d& ground_center, const Eigen::Vector3d& ground_normal,
+                   const Eigen::Vector3d& facade_center, const Eigen::Vector3d& facade_normal) {
+  if (tilt_deg(ground_normal) < kSlopeTiltDeg) return false;
+  if (std::abs(ground_normal.dot(facade_center - ground_center)) > kStepToleranceM) return false;
+  const Eigen::Vector2d downhill = ground_normal.head<2>().normalized();
+  const Eigen::Vector3d across(-downhill.y(), downhill.x(), 0.0);
+  return std::abs(facade_normal.dot(across)) < 0.5;
+}
 
 uint8_t uphill_sides(const Supervoxel& ground, uint8_t sides) {
   if (sides == 0 || !sloped(ground)) return 0;

@@ -15,6 +15,8 @@
 
 #include <cstdint>
 
+#include <Eigen/Core>
+
 #include "common/highlevel/supervoxel.h"
 
 namespace hexplore::highlevel {
@@ -33,5 +35,13 @@ uint8_t uphill_sides(const Supervoxel& ground, uint8_t sides);
 // other's plane, normals within 10 deg) and at most `reach_m` apart in the plane: a flight's
 // pieces on either side of a riser. Symmetric.
 bool on_one_slope(const Supervoxel& a, const Supervoxel& b, double reach_m);
+
+// Whether a facade near ground (centre and normal of each) is a step of the ground's slope
+// rather than a wall: the ground is sloped, the facade's centre lies on the ground's plane
+// (within a quarter metre: a riser's centre is a few centimetres off it) and it does not face
+// across the slope (a riser faces downhill, a tread seen too steeply faces up; a wall beside a
+// flight faces across it). A step neither keeps a body off the ground nor closes its rim.
+bool step_of_slope(const Eigen::Vector3d& ground_center, const Eigen::Vector3d& ground_normal,
+                   const Eigen::Vector3d& facade_center, const Eigen::Vector3d& facade_normal);
 
 }  // namespace hexplore::highlevel
