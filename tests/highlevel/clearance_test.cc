@@ -162,6 +162,56 @@ TEST(Clearance, NoRoomToStandUnderAnOverhang) {
   EXPECT_GT(map.graph().clearance_penalty(supervoxel_key({5, 2, 0}, SurfaceClass::kGround), 0), 0.0);
 }
 
+// A slab facing down 0.8 m over the hall's middle: over ground both species may use it is in
+// the MR1000-sized body's way (0.8 m tall); over ground only the 0.4 m tall tracked species may
+// use (a flight), it is a ceiling with room under it. B1's flight of the multi-building scene
+// had such a slab beside its upper treads, and no tracked robot had room to stand there.
+TEST(Clearance, ACeilingOverEveryBodyThatMayStandThereLeavesRoom) {
+  ClearanceOptions o;
+  o.body_radius_m = {0.54, 0.61};
+  o.body_half_width_m = {0.3, 0.35};
+  o.body_height_m = {0.4, 0.8};  // tracked (level 2), wheeled (level 1)
+  o.species_level = {2, 1};
+  EXPECT_NEAR(o.overhead_m(2), 0.6, 1e-9);
+  EXPECT_NEAR(o.overhead_m(1), 1.0, 1e-9);
+  for (int requirement : {1, 2}) {
+    HighLevelMap map({2, 1}, o);
+    MapUpdate u = hall(4.0, 0.5, 4);
+    for (auto& sv : u.upserts) sv.traversal_requirement = requirement;
+    Supervoxel slab;
+    slab.key = supervoxel_key({5, 2, 1}, SurfaceClass::kFacade);
+    slab.center = {5.5, 2.5, 0.8};
+    slab.normal = {0, 0, -1};
+    slab.surface = SurfaceClass::kFacade;
+    u.upserts.push_back(slab);
+    map.apply(u);
+    EXPECT_EQ(map.graph().room_to_stand(supervoxel_key({5, 2, 0}, SurfaceClass::kGround), 0), requirement == 2)
+        << "ground of requirement " << requirement;
+  }
+}
+
+// A one-voxel sliver of ground beyond the known ground's edge (a slab edge grazed from below a
+// flight's top) holds no body and says nothing of what lies beyond: the edge stays open.
+// Ground of a few voxels there closes it.
+TEST(Clearance, ASliverOfGroundClosesNoSide) {
+  for (int voxels : {1, 5}) {
+    ClearanceOptions o;
+    o.body_radius_m = {0.61};
+    HighLevelMap map({1}, o);
+    MapUpdate u = open_ground(0.5, 3, 3);  // x 0.5..2.5
+    Supervoxel beyond;
+    beyond.key = supervoxel_key({3, 1, 0}, SurfaceClass::kGround);
+    beyond.center = {3.5, 1.5, 0.1};
+    beyond.surface = SurfaceClass::kGround;
+    beyond.traversal_requirement = 1;
+    beyond.voxel_count = voxels;
+    u.upserts.push_back(beyond);
+    map.apply(u);
+    const bool open = map.frontier_sides(supervoxel_key({2, 1, 0}, SurfaceClass::kGround)) & (1u << 0);  // +x
+    EXPECT_EQ(open, voxels == 1) << voxels << " voxels beyond the edge";
+  }
+}
+
 // The edge of the known ground keeps a body off like a wall: a vertex on the last row is half
 // a seed interval from the rim, its waypoint moves in until the body's radius fits (it can
 // turn there), a corner's moves in both ways, and rows inside are untouched. The MR1000 of

@@ -76,6 +76,21 @@ TEST(Slopes, TheUphillSideOfAFlightIsTheOneItRisesTowards) {
   EXPECT_EQ(uphill_sides(flat(0, 0, 0, 0, 0), 0b1111), 0u) << "flat ground has no uphill side";
 }
 
+// A riser lies on the flight's plane and faces downhill; a tread seen too steeply to be ground
+// faces up: both are steps of the flight. A wall beside the flight faces across it, and a slab
+// edge well above the plane is off it: those stay in a body's way.
+TEST(Slopes, ARiserIsAStepOfItsFlightAndAWallBesideItIsNot) {
+  const Supervoxel piece = flight_piece(0, 0, 3.0, 1.0);
+  const double t = std::tan(kFlightDeg * M_PI / 180.0);
+  const Supervoxel r = riser(0, 1, 3.0, 1.4, t * 1.4);
+  EXPECT_TRUE(step_of_slope(piece.center, piece.normal, r.center, r.normal));
+  EXPECT_TRUE(step_of_slope(piece.center, piece.normal, {3.3, 1.2, t * 1.2 + 0.05}, {0, -0.8, 0.6})) << "a steep tread";
+  EXPECT_FALSE(step_of_slope(piece.center, piece.normal, {3.9, 1.2, t * 1.2 + 0.3}, {-1, 0, 0})) << "the side wall";
+  EXPECT_FALSE(step_of_slope(piece.center, piece.normal, {3.0, 1.6, t * 1.6 + 0.7}, {0, -1, 0})) << "a slab edge over the flight";
+  const Supervoxel floor = flat(0, 0, 3.0, 1.0, 0.0);
+  EXPECT_FALSE(step_of_slope(floor.center, floor.normal, {3.0, 1.4, 0.1}, {0, -1, 0})) << "a kerb on flat ground is in the way";
+}
+
 HighLevelMap planning_map() {
   ClearanceOptions o;
   o.body_radius_m = {0.55, 0.6};
