@@ -52,7 +52,7 @@ uint64_t ClearanceIndex::cell_key(const Eigen::Vector3d& p) const {
 }
 
 ClearanceIndex::Entry ClearanceIndex::entry_of(const Supervoxel& sv) {
-  return Entry{sv.key, sv.center, sv.normal, sv.facade(), sv.traversal_requirement, sv.ground() && sv.voxel_count < 2};
+  return Entry{sv.key, sv.center, sv.normal, sv.facade(), sv.traversal_requirement, sliver_of_ground(sv)};
 }
 
 ClearanceIndex::Entry ClearanceIndex::ground_at(const Eigen::Vector3d& p) {
@@ -157,8 +157,6 @@ ClearanceIndex::SideClosure ClearanceIndex::side_closure(const Entry& g) const {
     if (e.key == g.key) return;
     const Eigen::Vector2d off = e.center.head<2>() - c;
     const bool facade = in_the_way(e, g);
-    // A single voxel of ground (a slab edge grazed from below a flight's top) holds no body, and
-    // what lies beyond it is as unknown as if it were not there: it closes no side.
     if (!facade && (e.facade || e.sliver || std::abs(e.center.z() - g.center.z()) > options_.ground_band_m)) return;
     const Patch wall = facade ? facade_patch(e) : Patch{};
     for (int i = 0; i < kRimSideCount; ++i) {

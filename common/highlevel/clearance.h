@@ -47,6 +47,9 @@ struct ClearanceOptions {
 // ClearanceIndex::rim_sides is side i).
 inline constexpr int kRimSideCount = 4;
 Eigen::Vector2d rim_side_direction(int side);
+// Ground of a single voxel (a slab edge grazed from below a flight's top): it holds no body and
+// says nothing of what lies beyond it, so it closes no side of the ground next to it.
+inline bool sliver_of_ground(const Supervoxel& sv) { return sv.ground() && sv.voxel_count < 2; }
 
 // Footprint half-diagonal and half-width of every species of the team (species index order).
 std::vector<double> body_radii(const core::TeamConfig& team);
@@ -108,7 +111,7 @@ class ClearanceIndex {
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
     bool facade = false;
     int requirement = 0;  // ground: its traversal requirement
-    bool sliver = false;  // ground of a single voxel (closes no side: see side_closure)
+    bool sliver = false;  // sliver_of_ground
   };
   static Entry entry_of(const Supervoxel& sv);
   // Ground at p with nothing known of it: level, and open to every species.

@@ -145,7 +145,7 @@ void HighLevelMap::apply(const MapUpdate& update) {
     // one-voxel sliver (which closes no side).
     const bool moved = old == nullptr || old->center != sv.center || old->normal != sv.normal || old->surface != sv.surface ||
                        old->traversal_requirement != sv.traversal_requirement ||
-                       (old->voxel_count < 2) != (sv.voxel_count < 2);
+                       sliver_of_ground(*old) != sliver_of_ground(sv);
     if (moved) forget(sv.key);
     supervoxels_[sv.key] = sv;
     if (!clearance) continue;
