@@ -48,8 +48,9 @@ struct ClearanceOptions {
 inline constexpr int kRimSideCount = 4;
 Eigen::Vector2d rim_side_direction(int side);
 // Ground of a single voxel (a slab edge grazed from below a flight's top): it holds no body and
-// says nothing of what lies beyond it, so it closes no side of the ground next to it.
-inline bool sliver_of_ground(const Supervoxel& sv) { return sv.ground() && sv.voxel_count < 2; }
+// says nothing of what lies beyond it, so it closes no side of the ground next to it. A count
+// of 0 is a map that does not count voxels (hand-made ones): not a sliver.
+inline bool sliver_of_ground(const Supervoxel& sv) { return sv.ground() && sv.voxel_count == 1; }
 
 // Footprint half-diagonal and half-width of every species of the team (species index order).
 std::vector<double> body_radii(const core::TeamConfig& team);
