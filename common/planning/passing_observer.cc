@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/planning/frontier.h"
+#include "common/planning/planning_types.h"
 #include "common/planning/visibility.h"
 
 namespace hexplore::planning {
@@ -14,7 +15,7 @@ PassingObserver::PassingObserver(PassingOptions passing, PlannerOptions planner)
 bool PassingObserver::in_view(const highlevel::Supervoxel& sv, const Eigen::Vector3d& position,
                               const OcclusionGrid& occlusion) const {
   if (sv.ground())
-    return (sv.center - position).head<2>().norm() <= passing_.ground_reach_m && std::abs(sv.center.z() - position.z()) < 1.5;
+    return (sv.center - position).head<2>().norm() <= passing_.ground_reach_m && same_level(sv.center, position);
   const Eigen::Vector3d sensor = position + Eigen::Vector3d(0, 0, planner_.sensor_height_m);
   const ViewGeometry g = view_geometry(sensor, Eigen::Vector3d::UnitZ(), sv.center, sv.normal);
   if (g.distance_m >= passing_.range_m) return false;

@@ -1,6 +1,7 @@
 #pragma once
 // Inputs and outputs of one planning round, shared by every planner.
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -15,6 +16,15 @@
 #include "common/planning/task_views.h"
 
 namespace hexplore::planning {
+
+// Points less than this apart in height are on one level: one storey, or a few steps of one
+// flight. A storey is at least 3 m high and a flight rises at most ~0.6 m per horizontal metre,
+// so a spot within reach (a metre or two) on the same flight passes and the floor above fails.
+// Horizontal distances alone would take a spot upstairs for one beneath it.
+constexpr double kSameLevelM = 1.5;
+inline bool same_level(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::abs(a.z() - b.z()) < kSameLevelM;
+}
 
 struct RobotState {
   std::string id;

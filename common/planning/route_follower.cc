@@ -12,6 +12,12 @@ namespace hexplore::planning {
 namespace {
 
 double horizontal(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return (a - b).head<2>().norm(); }
+// Within `reach_m` on the same level: a spot on the floor above a robot is not reached from
+// beneath it (multi-building seed 5: a SLUGCAT on the ground floor was handed views upstairs
+// right above it), and two views a storey apart are not one view.
+bool at_spot(const Eigen::Vector3d& spot, const Eigen::Vector3d& p, double reach_m) {
+  return horizontal(spot, p) <= reach_m && same_level(spot, p);
+}
 
 // Whether a target still needs looking at: in the map, incomplete (or at the frontier) and not
 // given up.
@@ -46,7 +52,7 @@ void RouteFollower::set_route(std::vector<TaskView> route, const Eigen::Vector3d
   // way to the goal, so legs cannot take turns.
   std::optional<TaskView> leg;
   if (driving_ && next_ < route_.size()) leg = route_[next_];
-  if (leg && !route.empty() && horizontal(route.front().position, leg->position) > options_.reach_m &&
+  if (leg && !route.empty() && !at_spot(route.front().position, leg->position, options_.reach_m) &&
       path_length(position, route.front(), map) + options_.switch_gain_m < path_length(position, *leg, map)) {
     leg.reset();
     ++counters_.legs_switched;
@@ -69,7 +75,7 @@ void RouteFollower::set_route(std::vector<TaskView> route, const Eigen::Vector3d
   next_ = 0;
   if (leg) {
     const auto same = std::find_if(route_.begin(), route_.end(), [&](const TaskView& v) {
-      return horizontal(v.position, leg->position) <= options_.reach_m;
+      return at_spot(v.position, leg->position, options_.reach_m);
     });
     if (same != route_.end()) std::rotate(route_.begin(), same, same + 1);
     else route_.insert(route_.begin(), *leg);
@@ -114,7 +120,7 @@ Eigen::Vector3d RouteFollower::standing_spot(const TaskView& view, const highlev
 bool RouteFollower::reached(const TaskView& view, const Eigen::Vector3d& position,
                             const highlevel::HighLevelMap& map) const {
   const double reach = view.facade || view.frontier ? options_.observe_reach_m : options_.reach_m;
-  return horizontal(standing_spot(view, map), position) <= reach;
+  return at_spot(standing_spot(view, map), position, reach);
 }
 
 void RouteFollower::keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& stretch) {
@@ -123,7 +129,7 @@ void RouteFollower::keep_stretch(size_t at, const std::vector<Eigen::Vector3d>& 
   size_t kept = at;
   for (const auto& p : stretch) {
     const auto it = std::find_if(route_.begin() + static_cast<std::ptrdiff_t>(kept), route_.end(),
-                                 [&](const TaskView& v) { return horizontal(v.position, p) <= options_.reach_m; });
+                                 [&](const TaskView& v) { return at_spot(v.position, p, options_.reach_m); });
     if (it == route_.end()) continue;
     std::rotate(route_.begin() + static_cast<std::ptrdiff_t>(kept), it, it + 1);
     ++kept;
@@ -224,7 +230,7 @@ std::optional<MotionOrder> RouteFollower::next_order(double now_s, const Eigen::
   const bool blocked = blocked_since_s_ >= 0.0 && now_s - blocked_since_s_ >= options_.blocked_s;
   const bool stuck = progress_s_ >= 0.0 && now_s - progress_s_ >= options_.stuck_s;
   if (!blocked && !stuck) return std::nullopt;
-  if (route_[next_].facade && horizontal(standing_spot(route_[next_], map), position) <= options_.reach_m) {
+  if (route_[next_].facade && at_spot(standing_spot(route_[next_], map), position, options_.reach_m)) {
     // Within a metre of a spot it cannot get nearer to (its body against the edge of the known
     // ground or a wall): a look from here sees what the spot would, give or take a few degrees,
     // where a skip would count an attempt without a look (default mission: 39 of the MR1000's 62

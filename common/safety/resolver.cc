@@ -51,6 +51,7 @@ void SafetyOptions::validate() const {
   require_positive(min_move_m, "min_move_m");
   require_positive(sample_step_m, "sample_step_m");
   require_positive(give_way_timeout_s, "give_way_timeout_s");
+  require_positive(level_separation_m, "level_separation_m");
 }
 
 ConflictResolver::ConflictResolver(std::string robot_id, const Eigen::Vector3d& body_half_extents_m,
@@ -147,6 +148,24 @@ std::vector<Fragment> ConflictResolver::with_frozen_as_stopped(const std::vector
     }
   }
   return adjusted;
+}
+
+bool ConflictResolver::on_another_level(const Path& own_near, const Fragment& peer) const {
+  const auto span = [](const Path& points) {
+    double lo = kInf, hi = -kInf;
+    for (const auto& p : points) {
+      lo = std::min(lo, p.z());
+      hi = std::max(hi, p.z());
+    }
+    return std::pair{lo, hi};
+  };
+  Path peer_points = peer.path();
+  peer_points.insert(peer_points.end(), peer.trail_m.begin(), peer.trail_m.end());
+  const auto [own_lo, own_hi] = span(own_near);
+  const auto [peer_lo, peer_hi] = span(peer_points);
+  const double gap = std::max(peer_lo - own_hi, own_lo - peer_hi);
+  const double bodies = 2.0 * half_extents_m_.z() + (peer.box_max_m.z() - peer.box_min_m.z());
+  return gap > std::max(options_.level_separation_m, bodies);
 }
 
 Path ConflictResolver::remaining_desired(const Eigen::Vector3d& position, const Path& desired_path, double speed_mps) {
@@ -350,16 +369,19 @@ Decision ConflictResolver::decide(const Eigen::Vector3d& position, const Path& d
   const double since_last_s = std::max(0.0, now_s - last_decide_s_);
   last_decide_s_ = now_s;
   const std::vector<Fragment> adjusted = with_frozen_as_stopped(peers_in, now_s);
+  const Path remaining = remaining_desired(position, desired_path, speed_mps);
+  // Only teammates on this robot's storey take part (see on_another_level).
+  const Path near = truncate_to_length(remaining, options_.eta_p_m + options_.extrapolate_m);
   std::vector<const Fragment*> peers;
-  for (const auto& p : adjusted) peers.push_back(&p);
+  for (const auto& p : adjusted)
+    if (!on_another_level(near, p)) peers.push_back(&p);
   std::sort(peers.begin(), peers.end(), [](const Fragment* a, const Fragment* b) { return a->robot_id < b->robot_id; });
-  // Yields to robots that are no longer heard from end with them.
+  // Yields to robots that are no longer heard from (or have left this storey) end with them.
   for (auto it = yields_.begin(); it != yields_.end();) {
     const bool present = std::any_of(peers.begin(), peers.end(), [&](const Fragment* p) { return p->robot_id == it->first; });
     it = present ? std::next(it) : yields_.erase(it);
   }
 
-  const Path remaining = remaining_desired(position, desired_path, speed_mps);
   if (desired_path.empty() || path_length(remaining) < options_.min_move_m || !(speed_mps > 0.0)) {
     yields_.clear();
     conflicting_.clear();

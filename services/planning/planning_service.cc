@@ -280,7 +280,7 @@ std::unordered_set<uint64_t> PlanningService::avoided_vertices() const {
     if (keys.empty()) keys = map_->graph().vertex_keys();
     const Eigen::Vector3d& at = positions_.at(r.id);
     for (uint64_t k : keys)
-      if (const auto p = map_->graph().position(k); p && (*p - at).head<2>().norm() < reach && std::abs(p->z() - at.z()) < 1.5)
+      if (const auto p = map_->graph().position(k); p && (*p - at).head<2>().norm() < reach && planning::same_level(*p, at))
         out.insert(k);
   }
   return out;

@@ -317,6 +317,24 @@ TEST(RouteFollower, AGroundViewIsDoneOnArrival) {
   EXPECT_EQ(order->path.goal.ground_key, next.ground_key);
 }
 
+// Multi-building seed 5: a SLUGCAT standing on the ground floor was handed views on the storey
+// above; by horizontal distance alone it stood at them.
+TEST(RouteFollower, AViewOnTheStoreyAboveIsNotReachedFromBeneathIt) {
+  Drive d;
+  RouteFollower f(d.options, 0);
+  TaskView upstairs = view_at(d.map, {6.5, 6.5, 0}, true);
+  const Eigen::Vector3d beneath = upstairs.position - Eigen::Vector3d(0, 0, 3.0);
+  f.set_route({upstairs}, beneath, d.map);
+  const auto order = f.step(0.0, beneath, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  EXPECT_FALSE(order && order->observing);
+  EXPECT_FALSE(f.observing());
+  EXPECT_EQ(f.counters().views_observed, 0);
+  // On the view's own level it is reached as before.
+  const auto there = f.step(1.0, upstairs.position, DriveState::kIdle, d.map, d.keep_off, d.ledger);
+  ASSERT_TRUE(there);
+  EXPECT_TRUE(there->observing);
+}
+
 // A ground view at the frontier of the known ground is reached at its spot, like a facade
 // view: 0.8 m short of a ramp's crest the roof beyond is not in sight yet (ClimbGraph test).
 TEST(RouteFollower, AViewAtTheFrontierIsReachedAtItsSpotNotAMetreShort) {

@@ -252,10 +252,41 @@ TEST(Resolver, TracksProgressInsteadOfJumpingToANearbyLaterPartOfThePath) {
   EXPECT_NEAR(path_length(d.waypoints), 0.35 + 7.0 + 0.6 + 10.0, 1e-6);
 }
 
+TEST(Resolver, ATeammateOnTheStoreyBelowIsNeitherYieldedToNorDrivenRound) {
+  // Multi-building seed 5: a SLUGCAT on B3's second storey (4.2 m) drove back and forth for 140 s
+  // round an idle teammate standing on the ground floor beneath it.
+  ConflictResolver r("b", kHalf, SafetyOptions{});
+  const Path plan{V(-5, 0, 4.0), V(5, 0, 4.0)};
+  const auto below_standing = r.decide(V(-5, 0, 4.2), plan, 0.5, {standing("a", V(0, 0, 0.2))}, 0.0);
+  ASSERT_EQ(below_standing.kind, DecisionKind::kFollow);
+  EXPECT_FALSE(below_standing.detoured);
+  EXPECT_TRUE(below_standing.reason.empty());
+  EXPECT_NEAR(path_length(below_standing.waypoints), 10.0, 1e-9);
+  // Crossing right under it, sooner there, with the lower id: no yield either.
+  const auto below_crossing =
+      r.decide(V(-1, 0, 4.2), plan, 0.5, {moving("a", V(0, -0.5, 0.2), V(0, 5, 0.2), 0.5)}, 0.2);
+  ASSERT_EQ(below_crossing.kind, DecisionKind::kFollow);
+  EXPECT_TRUE(below_crossing.yielding_to.empty());
+  EXPECT_EQ(r.counters().conflicts_detected, 0u);
+}
+
+TEST(Resolver, ATeammateComingUpTheFlightTowardsTheRobotStillCounts) {
+  // b stands at the top of a flight (4.2 m) about to go down it; a climbs it towards b, 1.4 m
+  // below b's body: the same flight, so a head-on conflict as on flat ground.
+  const Path down{V(0, 0, 4.0), V(-6.4, 0, 0.0)};
+  ConflictResolver r("b", kHalf, SafetyOptions{});
+  r.decide(V(0, 0, 4.2), down, 0.5, {}, 0.0);
+  r.decide(V(0, 0, 4.2), down, 0.5, {moving("a", V(-2.3, 0, 2.8), V(0, 0, 4.2), 0.5)}, 0.2);
+  EXPECT_EQ(r.counters().conflicts_detected, 1u);
+}
+
 TEST(Resolver, OptionsAreValidated) {
   SafetyOptions bad;
   bad.eta_p_m = -1;
   EXPECT_THROW(ConflictResolver("a", kHalf, bad), std::invalid_argument);
+  SafetyOptions no_levels;
+  no_levels.level_separation_m = 0.0;
+  EXPECT_THROW(ConflictResolver("a", kHalf, no_levels), std::invalid_argument);
   EXPECT_THROW(ConflictResolver("", kHalf, SafetyOptions{}), std::invalid_argument);
 }
 
