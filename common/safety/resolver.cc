@@ -151,18 +151,18 @@ std::vector<Fragment> ConflictResolver::with_frozen_as_stopped(const std::vector
 }
 
 bool ConflictResolver::on_another_level(const Path& own_near, const Fragment& peer) const {
-  const auto span = [](const Path& points) {
-    double lo = kInf, hi = -kInf;
-    for (const auto& p : points) {
-      lo = std::min(lo, p.z());
-      hi = std::max(hi, p.z());
-    }
-    return std::pair{lo, hi};
+  // Lowest and highest point of each robot's near motion (the peer's: where it is, where its
+  // fragment leads, and the trail it may still be on).
+  const auto widen = [](double& lo, double& hi, double z) {
+    lo = std::min(lo, z);
+    hi = std::max(hi, z);
   };
-  Path peer_points = peer.path();
-  peer_points.insert(peer_points.end(), peer.trail_m.begin(), peer.trail_m.end());
-  const auto [own_lo, own_hi] = span(own_near);
-  const auto [peer_lo, peer_hi] = span(peer_points);
+  double own_lo = kInf, own_hi = -kInf;
+  for (const auto& p : own_near) widen(own_lo, own_hi, p.z());
+  double peer_lo = kInf, peer_hi = -kInf;
+  widen(peer_lo, peer_hi, peer.position_m.z());
+  for (const Path* points : {&peer.waypoints_m, &peer.trail_m})
+    for (const auto& p : *points) widen(peer_lo, peer_hi, p.z());
   const double gap = std::max(peer_lo - own_hi, own_lo - peer_hi);
   const double bodies = 2.0 * half_extents_m_.z() + (peer.box_max_m.z() - peer.box_min_m.z());
   return gap > std::max(options_.level_separation_m, bodies);

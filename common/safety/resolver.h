@@ -116,7 +116,7 @@ class ConflictResolver {
   // Whether `peer` is on another storey than a robot about to drive `own_near` (see
   // SafetyOptions::level_separation_m). Distances elsewhere in the resolver are horizontal, so
   // without this a robot upstairs would yield to, and detour round, a teammate standing below it
-  // (multi-building seed 5: 140 s held over an idle robot on the floor beneath).
+  // (multi-building seed 5: 144 s held over an idle robot on the floor beneath).
   bool on_another_level(const Path& own_near, const Fragment& peer) const;
   // The desired path ahead of the robot: looked for near where it was last time, unless it is
   // clearly elsewhere (a long detour, a relocalisation), then anywhere on the path.
