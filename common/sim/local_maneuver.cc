@@ -33,9 +33,15 @@ ProxyBox body_box_at(const TerrainProbe& probe, const Footprint& pose, double ma
 }
 
 std::optional<std::vector<Footprint>> plan_maneuver(const TerrainProbe& probe, const Footprint& from,
-                                                    const Eigen::Vector2d& goal, std::span<const ProxyBox> teammates,
+                                                    const Eigen::Vector2d& far_goal, std::span<const ProxyBox> teammates,
                                                     const ManeuverOptions& options) {
-  if ((goal - from.xy).norm() > options.max_goal_m) return std::nullopt;
+  // A far waypoint is made for through a stand-in on the way: what wedges a body is where it
+  // stands (on the edge of the ground plane, a wheeled body parallel to the rim cannot turn in
+  // place, yet a few small turns and moves take it inwards), and the path takes it on from
+  // there. Refusing far goals left an MR1000 BLOCKED on the rim for 470 s of a main-job run.
+  const double far = (far_goal - from.xy).norm();
+  const Eigen::Vector2d goal =
+      far > options.max_goal_m ? Eigen::Vector2d(from.xy + (far_goal - from.xy) * (options.max_goal_m / far)) : far_goal;
   auto clear_of_teammates = [&](const Footprint& pose) {
     const ProxyBox body = body_box_at(probe, pose, options.teammate_margin_m);
     for (const ProxyBox& mate : teammates)

@@ -27,7 +27,8 @@ struct ManeuverOptions {
                                    // narrower than a door passes it within half a step)
   double reach_m = 0.08;           // the goal counts as reached this close
   double window_m = 2.0;           // search no farther than this around start and goal
-  double max_goal_m = 3.0;         // a goal farther away is not planned for
+  double max_goal_m = 3.0;         // a goal farther away is planned for through the point this
+                                   // far along the straight line to it (the path takes the body on)
   int max_expansions = 8000;       // then give up (the body is blocked): about 0.3 s
   double reverse_cost = 1.5;       // per metre backwards, against 1 forwards
   double turn_cost_m = 0.05;       // per heading step, in metres of driving
@@ -37,11 +38,12 @@ struct ManeuverOptions {
 // The body of `probe`'s species at `pose`, grown by `margin_m` on every side.
 ProxyBox body_box_at(const TerrainProbe& probe, const Footprint& pose, double margin_m = 0.0);
 
-// The poses, from the first after `from` to one within reach of `goal`, each one move or one
-// turn away from the previous (so each can be driven as it stands); nullopt when no
-// manoeuvre within the window reaches the goal.
+// The poses, from the first after `from` to one within reach of `goal` (or of its stand-in
+// max_goal_m along the way when it is farther), each one move or one turn away from the
+// previous (so each can be driven as it stands); nullopt when no manoeuvre within the window
+// reaches it.
 std::optional<std::vector<Footprint>> plan_maneuver(const TerrainProbe& probe, const Footprint& from,
-                                                    const Eigen::Vector2d& goal, std::span<const ProxyBox> teammates,
+                                                    const Eigen::Vector2d& far_goal, std::span<const ProxyBox> teammates,
                                                     const ManeuverOptions& options = {});
 
 }  // namespace hexplore::sim

@@ -10,6 +10,7 @@
 #include "common/sim/scene_error.h"
 #include "common/sim/scene_parts.h"
 #include "common/sim/scenes.h"
+#include "common/sim/terrain_probe.h"
 
 namespace hexplore::sim {
 namespace {
@@ -204,19 +205,33 @@ TEST(RobotMotion, TurnsInPlaceWhereItFits) {
 }
 
 // On the edge of the ground (half a metre from where the plane ends, the centre of the last
-// row of ground supervoxels) the wheeled body cannot turn off its heading: every yaw swings a
-// corner over the edge. One body radius in (where the planner's clearance now puts waypoints
-// by the rim of the known ground, common/highlevel/clearance.h) it turns and drives away.
-TEST(RobotMotion, OnTheEdgeOfTheGroundTheWheeledBodyCannotTurnButOneRadiusInItCan) {
-  const RayCaster caster(test_course());  // the plane ends at y = -10
+// row of ground supervoxels) the wheeled body cannot turn in place: every yaw that faces it
+// inwards swings a corner over the edge. It manoeuvres inwards instead (small turns and moves;
+// for a waypoint beyond the manoeuvre's reach, towards a stand-in on the way: a main-job run's
+// MR1000 stood BLOCKED 0.47 m from the west edge of the default scene for 470 s). One body
+// radius in (where the planner's clearance puts waypoints by the rim of the known ground,
+// common/highlevel/clearance.h) it simply turns and drives away.
+TEST(RobotMotion, OnTheEdgeOfTheGroundTheWheeledBodyManoeuvresWhereItCannotTurn) {
+  const RayCaster caster(test_course());  // the plane ends at y = -10; a wall stands at y = -5
   const auto species = core::builtin_mr1000();
-  RobotMotion on_edge(caster, species, {20, -9.5, 0}, 0.0);
-  drive(on_edge, {{20, -6, 0}}, 20);
-  EXPECT_GT((on_edge.ground_position() - Eigen::Vector3d(20, -6, 0)).norm(), 2.0);
+  const TerrainProbe probe(caster, species);
+  for (const double from_edge : {0.47, 0.5}) {
+    for (const Eigen::Vector3d& goal : {Eigen::Vector3d(20, -7.5, 0), Eigen::Vector3d(20, -6, 0), Eigen::Vector3d(22.5, -6.2, 0)}) {
+      RobotMotion on_edge(caster, species, {20, -10 + from_edge, 0}, 0.0);
+      const Footprint start = *probe.footprint({20, -10 + from_edge}, 0.0, 0.0);
+      EXPECT_FALSE(probe.turn(start, M_PI / 2).has_value()) << from_edge;
+      EXPECT_EQ(drive(on_edge, {goal}, 90), MotionState::kIdle)
+          << from_edge << " to " << goal.transpose() << ": " << to_string(on_edge.block_reason()) << " at "
+          << on_edge.ground_position().transpose();
+      EXPECT_LT((on_edge.ground_position() - goal).norm(), 0.1) << from_edge << " to " << goal.transpose();
+      EXPECT_GE(on_edge.maneuvers(), 1u) << from_edge << " to " << goal.transpose();
+    }
+  }
   const double radius = species.body_half_extents_m.head<2>().norm();
   RobotMotion inside(caster, species, {20, -10 + radius, 0}, 0.0);
   EXPECT_EQ(drive(inside, {{20, -6, 0}}, 20), MotionState::kIdle);
   EXPECT_LT((inside.ground_position() - Eigen::Vector3d(20, -6, 0)).norm(), 0.1);
+  EXPECT_EQ(inside.maneuvers(), 0u);
 }
 
 // The safety layer re-sends the remaining path every cycle, starting at the nearest point of
