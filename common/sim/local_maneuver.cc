@@ -38,7 +38,7 @@ std::optional<std::vector<Footprint>> plan_maneuver(const TerrainProbe& probe, c
   // A far waypoint is made for through a stand-in on the way: what wedges a body is where it
   // stands (on the edge of the ground plane, a wheeled body parallel to the rim cannot turn in
   // place, yet a few small turns and moves take it inwards), and the path takes it on from
-  // there. Refusing far goals left an MR1000 BLOCKED on the rim for 470 s of a main-job run.
+  // there (before, a far goal was not planned for and the body reported BLOCKED).
   const double far = (far_goal - from.xy).norm();
   const Eigen::Vector2d goal =
       far > options.max_goal_m ? Eigen::Vector2d(from.xy + (far_goal - from.xy) * (options.max_goal_m / far)) : far_goal;
