@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -18,6 +17,7 @@
 #include "common/planning/planner_registry.h"
 #include "common/core/rng.h"
 
+#include "tests/support/plan_agreement.h"
 #include "tests/support/planning_scene.h"
 
 using namespace hexplore;
@@ -127,16 +127,6 @@ int main(int argc, char** argv) {
       return m;
     };
     const auto map_a = make_map(0.0), map_b = make_map(0.05);
-    auto agreement = [](const PlanResult& x, const PlanResult& y) {
-      std::map<uint64_t, size_t> owner;
-      for (size_t r = 0; r < x.robots.size(); ++r)
-        for (uint64_t id : x.robots[r].cluster_ids) owner[id] = r;
-      int same = 0, common = 0;
-      for (size_t r = 0; r < y.robots.size(); ++r)
-        for (uint64_t id : y.robots[r].cluster_ids)
-          if (auto it = owner.find(id); it != owner.end()) ++common, same += it->second == r;
-      return common ? double(same) / common : 0.0;
-    };
     PlannerContext c = ctx;
     c.options.ga_time_budget_s = 0.0;
     std::printf("\nassignment agreement between two robots whose maps differ by 5 %% of facade ISE "
@@ -155,7 +145,7 @@ int main(int argc, char** argv) {
       rb.self = 2;
       const PlanResult a1 = pa->plan(ra), b1 = pb->plan(rb);
       if (pa->route_sharing() == RouteSharing::kNone) {
-        std::printf("  %-11s %.2f (shares no route; clusters %d / %d)\n", name.c_str(), agreement(a1, b1), a1.clusters,
+        std::printf("  %-11s %.2f (shares no route; clusters %d / %d)\n", name.c_str(), assignment_agreement(a1, b1), a1.clusters,
                     b1.clusters);
         continue;
       }
@@ -163,7 +153,7 @@ int main(int argc, char** argv) {
       ra.round = rb.round = 1;
       const PlanResult a2 = pa->plan(ra), b2 = pb->plan(rb);
       std::printf("  %-11s %.2f without reference, %.2f with shared reference (clusters %d / %d)\n", name.c_str(),
-                  agreement(a1, b1), agreement(a2, b2), a2.clusters, b2.clusters);
+                  assignment_agreement(a1, b1), assignment_agreement(a2, b2), a2.clusters, b2.clusters);
     }
   }
   return 0;

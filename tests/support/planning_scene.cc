@@ -24,8 +24,8 @@ highlevel::MapUpdate synthetic_scene(const SyntheticSceneOptions& o) {
     door.insert({(b.x0 + b.x1) / 2 + 1, b.y1});
   }
   auto ground_at = [&](int x, int y) { return !wall.count({x, y}) || door.count({x, y}); };
-  auto in_rubble = [&](int x, int y) {
-    for (const auto& r : o.rubble)
+  auto in = [](const std::vector<Eigen::Vector4i>& rects, int x, int y) {
+    for (const auto& r : rects)
       if (x >= r[0] && x <= r[2] && y >= r[1] && y <= r[3]) return true;
     return false;
   };
@@ -37,7 +37,7 @@ highlevel::MapUpdate synthetic_scene(const SyntheticSceneOptions& o) {
       sv.normal = Eigen::Vector3d::UnitZ();
       sv.surface = SurfaceClass::kGround;
       sv.key = highlevel::supervoxel_key(core::cell_of(sv.center, c), sv.surface);
-      sv.traversal_requirement = in_rubble(x, y) ? 2 : 1;
+      sv.traversal_requirement = in(o.masonry, x, y) ? 3 : in(o.rubble, x, y) ? 2 : 1;
       sv.covered = rng.uniform() < o.covered_fraction;
       sv.voxel_count = 40;
       up.upserts.push_back(sv);

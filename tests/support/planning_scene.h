@@ -22,8 +22,10 @@ struct SyntheticSceneOptions {
   int depth_cells = 35;
   double cell_m = 1.0;    // eta_s
   std::vector<SyntheticBuilding> buildings = {{3, 3, 12, 11, 8}, {16, 4, 27, 12, 8}, {8, 18, 32, 30, 10}};
-  // Rubble rectangles (traversal requirement 2).
+  // Rubble rectangles (traversal requirement 2), and masonry ones only a level-3 species
+  // crosses (requirement 3; x0, y0, x1, y1 in cells).
   std::vector<Eigen::Vector4i> rubble = {Eigen::Vector4i(34, 2, 42, 10), Eigen::Vector4i(36, 20, 43, 32)};
+  std::vector<Eigen::Vector4i> masonry;
   double covered_fraction = 0.3;  // share of supervoxels already covered (CSE)
   uint64_t seed = 7;
 };
