@@ -207,8 +207,8 @@ TEST(RobotMotion, TurnsInPlaceWhereItFits) {
 // On the edge of the ground (half a metre from where the plane ends, the centre of the last
 // row of ground supervoxels) the wheeled body cannot turn in place: every yaw that faces it
 // inwards swings a corner over the edge. It manoeuvres inwards instead (small turns and moves;
-// for a waypoint beyond the manoeuvre's reach, towards a stand-in on the way: a main-job run's
-// MR1000 stood BLOCKED 0.47 m from the west edge of the default scene for 470 s). One body
+// for a waypoint beyond the manoeuvre's reach, towards a stand-in on the way; a main-job run's
+// MR1000 stood BLOCKED 0.47 m from the west edge of the default scene for 470 s, not traced). One body
 // radius in (where the planner's clearance puts waypoints by the rim of the known ground,
 // common/highlevel/clearance.h) it simply turns and drives away.
 TEST(RobotMotion, OnTheEdgeOfTheGroundTheWheeledBodyManoeuvresWhereItCannotTurn) {
@@ -216,10 +216,11 @@ TEST(RobotMotion, OnTheEdgeOfTheGroundTheWheeledBodyManoeuvresWhereItCannotTurn)
   const auto species = core::builtin_mr1000();
   const TerrainProbe probe(caster, species);
   for (const double from_edge : {0.47, 0.5}) {
+    const Footprint start = *probe.footprint({20, -10 + from_edge}, 0.0, 0.0);
+    EXPECT_FALSE(probe.turn(start, M_PI / 2).has_value()) << from_edge;
+    // Waypoints 2.0, 3.5 and 4.2 m away: within the manoeuvre's reach and beyond it.
     for (const Eigen::Vector3d& goal : {Eigen::Vector3d(20, -7.5, 0), Eigen::Vector3d(20, -6, 0), Eigen::Vector3d(22.5, -6.2, 0)}) {
       RobotMotion on_edge(caster, species, {20, -10 + from_edge, 0}, 0.0);
-      const Footprint start = *probe.footprint({20, -10 + from_edge}, 0.0, 0.0);
-      EXPECT_FALSE(probe.turn(start, M_PI / 2).has_value()) << from_edge;
       EXPECT_EQ(drive(on_edge, {goal}, 90), MotionState::kIdle)
           << from_edge << " to " << goal.transpose() << ": " << to_string(on_edge.block_reason()) << " at "
           << on_edge.ground_position().transpose();
