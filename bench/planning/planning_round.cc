@@ -15,7 +15,6 @@
 #include "common/core/team_config.h"
 #include "common/highlevel/supervoxel.h"
 #include "common/planning/planner_registry.h"
-#include "common/core/rng.h"
 
 #include "tests/support/plan_agreement.h"
 #include "tests/support/planning_scene.h"
@@ -119,9 +118,7 @@ int main(int argc, char** argv) {
     // reference candidates (planners that share no route ignore them).
     auto make_map = [&](double lag) {
       auto up = synthetic_scene(SyntheticSceneOptions{});
-      core::PlanRng rng(99);
-      for (auto& sv : up.upserts)
-        if (sv.facade() && !sv.covered && rng.uniform() < lag) sv.covered = true;
+      hide_open_facades(up, lag);
       auto m = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team));
       m->apply(up);
       return m;

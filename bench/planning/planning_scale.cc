@@ -22,7 +22,6 @@
 #include <string>
 #include <vector>
 
-#include "common/core/rng.h"
 #include "common/core/team_config.h"
 #include "common/planning/planner_registry.h"
 
@@ -61,10 +60,7 @@ core::TeamConfig campus_team(int n) {
 
 std::unique_ptr<highlevel::HighLevelMap> make_map(const core::TeamConfig& team, double open_share, double lag = 0.0) {
   auto up = synthetic_scene(campus(open_share));
-  // A teammate that has not yet heard of part of the work sees it as covered.
-  core::PlanRng rng(99);
-  for (auto& sv : up.upserts)
-    if (sv.facade() && !sv.covered && rng.uniform() < lag) sv.covered = true;
+  hide_open_facades(up, lag);
   auto map = std::make_unique<highlevel::HighLevelMap>(highlevel::species_levels(team));
   map->apply(up);
   return map;
@@ -155,11 +151,11 @@ int main(int argc, char** argv) {
   {
     const core::TeamConfig team = campus_team(16);
     const auto map = make_map(team, team_open_share);
+    const PlannerOptions options = PlannerOptions::from(team.params);
     std::printf("campus map: %zu supervoxels, %zu graph vertices, %zu edges; %.0f %% open; hexplore planner, GA %d x %d "
                 "generations in %.0f ms; %d rounds per row (thread CPU time, ms)\n\n",
                 map->size(), map->graph().vertex_count(), map->graph().edge_count(), 100 * team_open_share,
-                PlannerOptions::from(team.params).ga_population, PlannerOptions::from(team.params).ga_max_generations,
-                1e3 * PlannerOptions::from(team.params).ga_time_budget_s, rounds);
+                options.ga_population, options.ga_max_generations, 1e3 * options.ga_time_budget_s, rounds);
   }
   std::ofstream team_csv, work_csv;
   if (!csv_dir.empty()) {

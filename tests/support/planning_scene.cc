@@ -86,4 +86,10 @@ highlevel::MapUpdate synthetic_scene(const SyntheticSceneOptions& o) {
   return up;
 }
 
+void hide_open_facades(highlevel::MapUpdate& up, double share) {
+  core::PlanRng rng(99);
+  for (auto& sv : up.upserts)
+    if (sv.facade() && !sv.covered && rng.uniform() < share) sv.covered = true;
+}
+
 }  // namespace hexplore::planning

@@ -33,4 +33,8 @@ struct SyntheticSceneOptions {
 // The map as one full-snapshot update (supervoxels and 8-neighbour ground edges).
 highlevel::MapUpdate synthetic_scene(const SyntheticSceneOptions& options);
 
+// A teammate's view of `up` when it has not yet heard of part of the work: each open facade is
+// seen as covered with probability `share` (a fixed draw, the same for every call).
+void hide_open_facades(highlevel::MapUpdate& up, double share);
+
 }  // namespace hexplore::planning
